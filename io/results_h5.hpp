@@ -1,0 +1,44 @@
+// results.h5: one group per output step, /steps/<step as 8 digits>, holding
+// the particle fields the case asks for, with "time" (s) and "step" as
+// attributes of the group. The file is flushed after every output step so
+// that an interrupted run keeps every step written before it.
+#pragma once
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "io/snapshot.hpp"
+
+namespace flowmpm {
+
+class ResultsH5 {
+ public:
+  // Creates (truncates) the file; throws std::runtime_error naming the path.
+  ResultsH5(const std::filesystem::path& path, OutputFields fields);
+  ~ResultsH5();
+  ResultsH5(const ResultsH5&) = delete;
+  ResultsH5& operator=(const ResultsH5&) = delete;
+
+  // Writes one output step and flushes the file.
+  void write(const ParticleSnapshot& snapshot);
+
+  // Name of the group of a step inside the file, e.g. "/steps/00000010".
+  static std::string group_name(std::int64_t step);
+
+  struct WrittenStep {
+    std::int64_t step;
+    double time;
+    std::size_t count;
+  };
+  const std::vector<WrittenStep>& written() const { return written_; }
+  const OutputFields& fields() const { return fields_; }
+  std::uintmax_t bytes_written() const { return bytes_; }
+
+ private:
+  long long file_;  // hid_t, kept opaque so that hdf5.h stays out of headers
+  OutputFields fields_;
+  std::vector<WrittenStep> written_;
+  std::uintmax_t bytes_ = 0;
+};
+
+}  // namespace flowmpm

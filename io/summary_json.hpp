@@ -1,0 +1,42 @@
+// summary.json: what ran, how fast and what came out; written atomically
+// (temporary file renamed into place) at the end of a run.
+#pragma once
+#include <array>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace flowmpm {
+
+struct BodySummary {
+  std::string name;
+  std::array<double, 6> mean_stress{};  // Pa, Voigt order, tensor shear
+  std::array<double, 6> mean_strain{};
+};
+
+struct RunSummary {
+  std::string case_name, case_file, scheme, shape_function, velocity_update;
+  std::string status = "completed";  // or "failed: <message>"
+  int dimension = 3;
+  int threads = 1;
+  std::size_t particles = 0, nodes = 0;
+  std::int64_t steps = 0;
+  double dt = 0.0, end_time = 0.0;       // s
+  double setup_seconds = 0.0;            // case read, particles generated and sorted
+  double step_loop_seconds = 0.0;        // wall time of the step loop, output excluded
+  double output_seconds = 0.0;           // wall time spent writing results
+  double particle_steps_per_second = 0.0;
+  std::vector<BodySummary> bodies;
+  // Error norms against a reference solution, by name (empty without one).
+  std::map<std::string, double> errors;
+};
+
+// The JSON text (pretty-printed, numbers with 17 significant digits,
+// non-finite numbers written as null).
+std::string summary_json(const RunSummary& summary);
+
+// Writes summary_json(...) to `path` atomically.
+void write_summary(const std::filesystem::path& path, const RunSummary& summary);
+
+}  // namespace flowmpm

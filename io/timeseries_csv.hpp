@@ -1,0 +1,38 @@
+// timeseries.csv: one row per recorded step: time, kinetic and strain energy,
+// and for each body the mean stress and strain (Voigt order, tensor shear).
+// Each row is flushed as it is written, so the file is never cut mid-row.
+#pragma once
+#include <array>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace flowmpm {
+
+struct BodyMeans {
+  std::array<double, 6> stress{};  // Pa, volume-weighted mean
+  std::array<double, 6> strain{};  // -, volume-weighted mean
+};
+
+struct TimeseriesRow {
+  std::int64_t step = 0;
+  double time = 0.0;            // s
+  double kinetic_energy = 0.0;  // J
+  double strain_energy = 0.0;   // J
+  std::vector<BodyMeans> bodies;  // in the order of the body names
+};
+
+class TimeseriesCsv {
+ public:
+  // Creates (truncates) the file and writes the header; throws
+  // std::runtime_error naming the path.
+  TimeseriesCsv(const std::filesystem::path& path, std::vector<std::string> body_names);
+  void write(const TimeseriesRow& row);
+
+ private:
+  std::ofstream out_;
+  std::size_t body_count_;
+};
+
+}  // namespace flowmpm
