@@ -3,6 +3,7 @@
 // attributes of the group. The file is flushed after every output step so
 // that an interrupted run keeps every step written before it.
 #pragma once
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -19,7 +20,9 @@ class ResultsH5 {
   ResultsH5(const ResultsH5&) = delete;
   ResultsH5& operator=(const ResultsH5&) = delete;
 
-  // Writes one output step and flushes the file.
+  // Writes one output step and flushes the file. Throws std::invalid_argument
+  // when an enabled field's size does not match the count (nothing is then
+  // written), std::runtime_error naming the file and dataset on HDF5 errors.
   void write(const ParticleSnapshot& snapshot);
 
   // Name of the group of a step inside the file, e.g. "/steps/00000010".
@@ -39,6 +42,7 @@ class ResultsH5 {
   OutputFields fields_;
   std::vector<WrittenStep> written_;
   std::uintmax_t bytes_ = 0;
+  std::string path_;  // for error messages
 };
 
 }  // namespace flowmpm

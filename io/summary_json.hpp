@@ -2,6 +2,7 @@
 // (temporary file renamed into place) at the end of a run.
 #pragma once
 #include <array>
+#include <cstdint>
 #include <filesystem>
 #include <map>
 #include <string>

@@ -3,6 +3,7 @@
 // Each row is flushed as it is written, so the file is never cut mid-row.
 #pragma once
 #include <array>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -33,6 +34,7 @@ class TimeseriesCsv {
  private:
   std::ofstream out_;
   std::size_t body_count_;
+  std::string path_;  // for error messages
 };
 
 }  // namespace flowmpm

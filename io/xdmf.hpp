@@ -11,7 +11,8 @@
 namespace flowmpm {
 
 // The XDMF text for the steps written so far; `h5_name` is the HDF5 file's
-// name relative to the XDMF file.
+// name relative to the XDMF file. Position is the grid's geometry: throws
+// std::invalid_argument when it is not among the results' fields.
 std::string xdmf_document(const std::string& h5_name, const ResultsH5& results);
 
 // Writes xdmf_document(...) to `path` atomically.

@@ -1,0 +1,71 @@
+#include "io/atomic_file.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <system_error>
+
+namespace flowmpm {
+namespace {
+
+[[noreturn]] void fail(const std::filesystem::path& path, const char* step,
+                       const std::string& reason) {
+  throw std::runtime_error("cannot write " + path.string() + ": " + step + ": " + reason);
+}
+
+// Writes all of `contents`, retrying short and interrupted writes; returns 0
+// or the errno of the failure.
+int write_all(int fd, std::string_view contents) {
+  while (!contents.empty()) {
+    const ssize_t n = ::write(fd, contents.data(), contents.size());
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      return errno;
+    }
+    contents.remove_prefix(static_cast<std::size_t>(n));
+  }
+  return 0;
+}
+
+}  // namespace
+
+void write_file_atomically(const std::filesystem::path& path, std::string_view contents) {
+  // The counter keeps temporary names distinct between threads of one process.
+  static std::atomic<unsigned> counter{0};
+  std::filesystem::path tmp = path;
+  tmp += ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
+
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  if (fd < 0) fail(path, "cannot create temporary file", std::strerror(errno));
+
+  const char* step = "write failed";
+  int error = write_all(fd, contents);
+  if (error == 0 && ::fsync(fd) != 0) {
+    error = errno;
+    step = "fsync failed";
+  }
+  if (::close(fd) != 0 && error == 0) {
+    error = errno;
+    step = "close failed";
+  }
+  std::string reason;
+  if (error == 0) {
+    std::error_code ec;
+    std::filesystem::rename(tmp, path, ec);
+    if (!ec) return;
+    step = "rename failed";
+    reason = ec.message();
+  } else {
+    reason = std::strerror(error);
+  }
+  std::error_code ignored;
+  std::filesystem::remove(tmp, ignored);
+  fail(path, step, reason);
+}
+
+}  // namespace flowmpm

@@ -1,0 +1,166 @@
+#include "io/results_h5.hpp"
+
+#include <hdf5.h>
+
+#include <cinttypes>
+#include <cstdio>
+#include <cstring>
+#include <stdexcept>
+#include <utility>
+
+namespace flowmpm {
+namespace {
+
+static_assert(sizeof(hid_t) == sizeof(long long), "ResultsH5 keeps its hid_t in a long long");
+
+// Owns one HDF5 identifier and closes it with `close` (H5Gclose, H5Dclose...).
+class Handle {
+ public:
+  Handle(hid_t id, herr_t (*close)(hid_t)) : id_(id), close_(close) {}
+  ~Handle() {
+    if (id_ >= 0) close_(id_);
+  }
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+  hid_t get() const { return id_; }
+  bool valid() const { return id_ >= 0; }
+  hid_t release() { return std::exchange(id_, H5I_INVALID_HID); }
+
+ private:
+  hid_t id_;
+  herr_t (*close_)(hid_t);
+};
+
+herr_t keep_innermost(unsigned n, const H5E_error2_t* error, void* data) {
+  if (n == 0 && error->desc != nullptr) *static_cast<std::string*>(data) = error->desc;
+  return 0;
+}
+
+// Throws with the innermost message of HDF5's error stack, which names the
+// actual cause (e.g. "unable to open file: ... errno = 2, ...").
+[[noreturn]] void fail(const std::string& file, const std::string& what) {
+  std::string detail;
+  H5Ewalk2(H5E_DEFAULT, H5E_WALK_UPWARD, keep_innermost, &detail);
+  std::string message = "HDF5 file " + file + ": " + what;
+  if (!detail.empty()) message += " (" + detail + ")";
+  throw std::runtime_error(message);
+}
+
+template <typename T>
+void write_scalar_attribute(hid_t object, const char* name, hid_t file_type, hid_t memory_type,
+                            const T& value, const std::string& file, const std::string& where) {
+  const std::string what = "cannot write attribute " + where + "@" + name;
+  Handle space(H5Screate(H5S_SCALAR), H5Sclose);
+  if (!space.valid()) fail(file, what);
+  Handle attribute(H5Acreate2(object, name, file_type, space.get(), H5P_DEFAULT, H5P_DEFAULT),
+                   H5Aclose);
+  if (!attribute.valid() || H5Awrite(attribute.get(), memory_type, &value) < 0) fail(file, what);
+}
+
+void write_units(hid_t dataset, const char* units, const std::string& file,
+                 const std::string& where) {
+  const std::string what = "cannot write attribute " + where + "@units";
+  Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
+  if (!type.valid() || H5Tset_size(type.get(), std::strlen(units) + 1) < 0 ||
+      H5Tset_strpad(type.get(), H5T_STR_NULLTERM) < 0)
+    fail(file, what);
+  Handle space(H5Screate(H5S_SCALAR), H5Sclose);
+  if (!space.valid()) fail(file, what);
+  Handle attribute(H5Acreate2(dataset, "units", type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
+                   H5Aclose);
+  if (!attribute.valid() || H5Awrite(attribute.get(), type.get(), units) < 0) fail(file, what);
+}
+
+// One dataset of count x components values (1D when components == 1).
+struct Field {
+  const char* name;
+  const void* data;
+  std::size_t size;  // number of values in `data`
+  std::size_t components;
+  hid_t file_type, memory_type;
+  std::size_t value_bytes;
+  const char* units;  // nullptr: no units attribute
+};
+
+// Writes one field into `group`; returns the raw data bytes written.
+std::uintmax_t write_field(hid_t group, const std::string& group_name, std::size_t count,
+                           const Field& field, const std::string& file) {
+  const std::string where = group_name + "/" + field.name;
+  const hsize_t dims[2] = {count, field.components};
+  Handle space(H5Screate_simple(field.components == 1 ? 1 : 2, dims, nullptr), H5Sclose);
+  if (!space.valid()) fail(file, "cannot create dataspace for " + where);
+  Handle dataset(H5Dcreate2(group, field.name, field.file_type, space.get(), H5P_DEFAULT,
+                            H5P_DEFAULT, H5P_DEFAULT),
+                 H5Dclose);
+  if (!dataset.valid()) fail(file, "cannot create dataset " + where);
+  // A zero-size dataset has nothing to write (and `data` may be null).
+  if (count > 0 &&
+      H5Dwrite(dataset.get(), field.memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, field.data) < 0)
+    fail(file, "cannot write dataset " + where);
+  if (field.units != nullptr) write_units(dataset.get(), field.units, file, where);
+  return static_cast<std::uintmax_t>(field.size) * field.value_bytes;
+}
+
+}  // namespace
+
+ResultsH5::ResultsH5(const std::filesystem::path& path, OutputFields fields)
+    : file_(H5I_INVALID_HID), fields_(fields), path_(path.string()) {
+  // Errors are reported by exceptions; HDF5 must not print its own stack.
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  Handle file(H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
+  if (!file.valid()) fail(path_, "cannot create file");
+  Handle steps(H5Gcreate2(file.get(), "/steps", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+  if (!steps.valid() || H5Fflush(file.get(), H5F_SCOPE_GLOBAL) < 0)
+    fail(path_, "cannot create group /steps");
+  file_ = file.release();
+}
+
+ResultsH5::~ResultsH5() { H5Fclose(file_); }
+
+std::string ResultsH5::group_name(std::int64_t step) {
+  char name[32];
+  std::snprintf(name, sizeof name, "/steps/%08" PRId64, step);
+  return name;
+}
+
+void ResultsH5::write(const ParticleSnapshot& snapshot) {
+  const std::string name = group_name(snapshot.step);
+  const auto real = [](const char* field_name, const std::vector<double>& values,
+                       std::size_t components, const char* units) {
+    return Field{field_name,       values.data(), values.size(), components, H5T_IEEE_F64LE,
+                 H5T_NATIVE_DOUBLE, sizeof(double), units};
+  };
+  std::vector<Field> fields;
+  if (fields_.position) fields.push_back(real("position", snapshot.position, 3, "m"));
+  if (fields_.velocity) fields.push_back(real("velocity", snapshot.velocity, 3, "m/s"));
+  if (fields_.stress) fields.push_back(real("stress", snapshot.stress, 6, "Pa"));
+  if (fields_.strain) fields.push_back(real("strain", snapshot.strain, 6, "-"));
+  if (fields_.volume) fields.push_back(real("volume", snapshot.volume, 1, "m^3"));
+  if (fields_.mass) fields.push_back(real("mass", snapshot.mass, 1, "kg"));
+  if (fields_.material)
+    fields.push_back(Field{"material", snapshot.material.data(), snapshot.material.size(), 1,
+                           H5T_STD_I32LE, H5T_NATIVE_INT32, sizeof(std::int32_t), nullptr});
+
+  // Checked before anything is written, so that a bad snapshot leaves no
+  // partial group behind.
+  for (const Field& field : fields)
+    if (field.size != snapshot.count * field.components)
+      throw std::invalid_argument("HDF5 file " + path_ + ": " + name + "/" + field.name + " has " +
+                                  std::to_string(field.size) + " values, expected " +
+                                  std::to_string(snapshot.count * field.components));
+
+  Handle group(H5Gcreate2(file_, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+  if (!group.valid()) fail(path_, "cannot create group " + name);
+  write_scalar_attribute(group.get(), "time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, snapshot.time,
+                         path_, name);
+  write_scalar_attribute(group.get(), "step", H5T_STD_I64LE, H5T_NATIVE_INT64, snapshot.step,
+                         path_, name);
+  std::uintmax_t bytes = 0;
+  for (const Field& field : fields)
+    bytes += write_field(group.get(), name, snapshot.count, field, path_);
+  if (H5Fflush(file_, H5F_SCOPE_GLOBAL) < 0) fail(path_, "cannot flush after " + name);
+  written_.push_back({snapshot.step, snapshot.time, snapshot.count});
+  bytes_ += bytes;
+}
+
+}  // namespace flowmpm

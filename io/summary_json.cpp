@@ -1,0 +1,107 @@
+#include "io/summary_json.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+
+#include "io/atomic_file.hpp"
+
+namespace flowmpm {
+namespace {
+
+// 17 significant digits (every double reads back exactly); JSON has no NaN
+// or infinity, so those are written as null.
+std::string number(double value) {
+  if (!std::isfinite(value)) return "null";
+  char buffer[32];
+  const auto result =
+      std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, 17);
+  return std::string(buffer, result.ptr);
+}
+
+std::string quoted(const std::string& text) {
+  std::string out = "\"";
+  for (const char c : text) {
+    switch (c) {
+      case '"': out += "\\\""; break;
+      case '\\': out += "\\\\"; break;
+      case '\b': out += "\\b"; break;
+      case '\f': out += "\\f"; break;
+      case '\n': out += "\\n"; break;
+      case '\r': out += "\\r"; break;
+      case '\t': out += "\\t"; break;
+      default:
+        if (static_cast<unsigned char>(c) < 0x20) {
+          char escape[8];
+          std::snprintf(escape, sizeof escape, "\\u%04x", static_cast<unsigned>(c));
+          out += escape;
+        } else {
+          out += c;
+        }
+    }
+  }
+  return out + "\"";
+}
+
+// {"xx": ..., "yy": ..., "zz": ..., "yz": ..., "xz": ..., "xy": ...}
+std::string voigt(const std::array<double, 6>& values) {
+  static constexpr const char* kComponents[6] = {"xx", "yy", "zz", "yz", "xz", "xy"};
+  std::string out = "{";
+  for (std::size_t i = 0; i < 6; ++i)
+    out += std::string(i == 0 ? "" : ", ") + "\"" + kComponents[i] + "\": " + number(values[i]);
+  return out + "}";
+}
+
+}  // namespace
+
+std::string summary_json(const RunSummary& s) {
+  std::string out = "{\n";
+  const auto field = [&out](const char* key, const std::string& value) {
+    out += std::string("  \"") + key + "\": " + value + ",\n";
+  };
+  field("case", quoted(s.case_name));
+  field("case_file", quoted(s.case_file));
+  field("status", quoted(s.status));
+  field("scheme", quoted(s.scheme));
+  field("shape_function", quoted(s.shape_function));
+  field("velocity_update", quoted(s.velocity_update));
+  field("dimension", std::to_string(s.dimension));
+  field("threads", std::to_string(s.threads));
+  field("particles", std::to_string(s.particles));
+  field("nodes", std::to_string(s.nodes));
+  field("steps", std::to_string(s.steps));
+  field("dt", number(s.dt));
+  field("end_time", number(s.end_time));
+  field("setup_seconds", number(s.setup_seconds));
+  field("step_loop_seconds", number(s.step_loop_seconds));
+  field("output_seconds", number(s.output_seconds));
+  field("particle_steps_per_second", number(s.particle_steps_per_second));
+
+  out += "  \"bodies\": [";
+  for (std::size_t i = 0; i < s.bodies.size(); ++i) {
+    const BodySummary& body = s.bodies[i];
+    out += i == 0 ? "\n" : ",\n";
+    out += "    {\n";
+    out += "      \"name\": " + quoted(body.name) + ",\n";
+    out += "      \"mean_stress\": " + voigt(body.mean_stress) + ",\n";
+    out += "      \"mean_strain\": " + voigt(body.mean_strain) + "\n";
+    out += "    }";
+  }
+  out += s.bodies.empty() ? "],\n" : "\n  ],\n";
+
+  out += "  \"errors\": {";
+  bool first = true;
+  for (const auto& [name, value] : s.errors) {
+    out += first ? "\n" : ",\n";
+    out += "    " + quoted(name) + ": " + number(value);
+    first = false;
+  }
+  out += s.errors.empty() ? "}\n" : "\n  }\n";
+  return out + "}\n";
+}
+
+void write_summary(const std::filesystem::path& path, const RunSummary& summary) {
+  write_file_atomically(path, summary_json(summary));
+}
+
+}  // namespace flowmpm

@@ -1,0 +1,82 @@
+#include "io/timeseries_csv.hpp"
+
+#include <cerrno>
+#include <charconv>
+#include <cstring>
+#include <stdexcept>
+
+namespace flowmpm {
+namespace {
+
+// 17 significant digits: every double reads back exactly.
+void append_number(std::string& out, double value) {
+  char buffer[32];
+  const auto result =
+      std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, 17);
+  out.append(buffer, result.ptr);
+}
+
+// Quotes a header field that holds a comma, quote or line break (RFC 4180).
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
+  std::string out = "\"";
+  for (const char c : text) {
+    if (c == '"') out += '"';
+    out += c;
+  }
+  return out + "\"";
+}
+
+// errno is cleared before each stream operation, so it names the cause only
+// when the operation set it.
+[[noreturn]] void fail(const char* what, const std::string& path) {
+  const int error = errno;
+  std::string message = std::string(what) + " " + path;
+  if (error != 0) message += std::string(": ") + std::strerror(error);
+  throw std::runtime_error(message);
+}
+
+constexpr const char* kComponents[6] = {"xx", "yy", "zz", "yz", "xz", "xy"};
+
+}  // namespace
+
+TimeseriesCsv::TimeseriesCsv(const std::filesystem::path& path,
+                             std::vector<std::string> body_names)
+    : body_count_(body_names.size()), path_(path.string()) {
+  errno = 0;
+  out_.open(path, std::ios::out | std::ios::trunc);
+  if (!out_) fail("cannot open", path_);
+  std::string header = "step,time,kinetic_energy,strain_energy";
+  for (const std::string& name : body_names)
+    for (const char* quantity : {".stress_", ".strain_"})
+      for (const char* component : kComponents)
+        header += "," + csv_field(name + quantity + component);
+  header += '\n';
+  errno = 0;
+  if (!out_.write(header.data(), static_cast<std::streamsize>(header.size())).flush())
+    fail("cannot write", path_);
+}
+
+void TimeseriesCsv::write(const TimeseriesRow& row) {
+  if (row.bodies.size() != body_count_)
+    throw std::invalid_argument("timeseries row for " + path_ + " has " +
+                                std::to_string(row.bodies.size()) + " bodies, expected " +
+                                std::to_string(body_count_));
+  std::string line = std::to_string(row.step);
+  for (const double value : {row.time, row.kinetic_energy, row.strain_energy}) {
+    line += ',';
+    append_number(line, value);
+  }
+  for (const BodyMeans& body : row.bodies)
+    for (const auto* values : {&body.stress, &body.strain})
+      for (const double value : *values) {
+        line += ',';
+        append_number(line, value);
+      }
+  line += '\n';
+  errno = 0;
+  if (!out_.write(line.data(), static_cast<std::streamsize>(line.size())).flush())
+    fail("cannot write", path_);
+}
+
+}  // namespace flowmpm

@@ -1,0 +1,412 @@
+// Output writers: results.h5 read back through the HDF5 C API, the XDMF
+// index, timeseries.csv, summary.json and atomic file replacement.
+#include <doctest/doctest.h>
+#include <hdf5.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "io/atomic_file.hpp"
+#include "io/results_h5.hpp"
+#include "io/summary_json.hpp"
+#include "io/timeseries_csv.hpp"
+#include "io/xdmf.hpp"
+
+namespace fs = std::filesystem;
+using namespace flowmpm;
+
+namespace {
+
+// A fresh directory, removed with everything in it at the end of the test.
+struct TempDir {
+  fs::path path;
+  TempDir() {
+    static std::atomic<int> counter{0};
+    path = fs::temp_directory_path() /
+           ("flowmpm_test_output_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
+    fs::remove_all(path);
+    fs::create_directories(path);
+  }
+  ~TempDir() {
+    std::error_code ignored;
+    fs::remove_all(path, ignored);
+  }
+};
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::vector<std::string> split(const std::string& text, char separator) {
+  std::vector<std::string> parts;
+  std::string part;
+  std::istringstream in(text);
+  while (std::getline(in, part, separator)) parts.push_back(part);
+  return parts;
+}
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+// Values that only survive a write exactly if no digit is lost.
+ParticleSnapshot make_snapshot(std::int64_t step, double time, std::size_t count) {
+  ParticleSnapshot s;
+  s.step = step;
+  s.time = time;
+  s.count = count;
+  for (std::size_t i = 0; i < count; ++i) {
+    const double x = static_cast<double>(i) + static_cast<double>(step);
+    for (int c = 0; c < 3; ++c) {
+      s.position.push_back(0.1 * x + c / 3.0);
+      s.velocity.push_back(-x / 7.0 + c * 1e-17);
+    }
+    for (int c = 0; c < 6; ++c) {
+      s.stress.push_back(1.0e6 * std::sin(x + c));
+      s.strain.push_back(1.0e-4 * std::cos(x - c));
+    }
+    s.volume.push_back(1e-9 * (1.0 + x / 3.0));
+    s.mass.push_back(2.7e-6 * (1.0 + x / 11.0));
+    s.material.push_back(static_cast<std::int32_t>(i % 3));
+  }
+  return s;
+}
+
+// Minimal readers over the HDF5 C API; each REQUIREs success.
+struct H5Reader {
+  hid_t file;
+  explicit H5Reader(const fs::path& path) {
+    file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    REQUIRE(file >= 0);
+  }
+  ~H5Reader() { H5Fclose(file); }
+
+  bool exists(const std::string& name) const {
+    return H5Lexists(file, name.c_str(), H5P_DEFAULT) > 0;
+  }
+
+  std::vector<hsize_t> dims(const std::string& name) const {
+    const hid_t dataset = H5Dopen2(file, name.c_str(), H5P_DEFAULT);
+    REQUIRE(dataset >= 0);
+    const hid_t space = H5Dget_space(dataset);
+    std::vector<hsize_t> result(static_cast<std::size_t>(H5Sget_simple_extent_ndims(space)));
+    H5Sget_simple_extent_dims(space, result.data(), nullptr);
+    H5Sclose(space);
+    H5Dclose(dataset);
+    return result;
+  }
+
+  template <typename T>
+  std::vector<T> read(const std::string& name, hid_t memory_type, std::size_t size) const {
+    std::vector<T> values(size);
+    const hid_t dataset = H5Dopen2(file, name.c_str(), H5P_DEFAULT);
+    REQUIRE(dataset >= 0);
+    REQUIRE(H5Dread(dataset, memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) >= 0);
+    H5Dclose(dataset);
+    return values;
+  }
+
+  template <typename T>
+  T attribute(const std::string& object, const char* name, hid_t memory_type) const {
+    T value{};
+    const hid_t attr = H5Aopen_by_name(file, object.c_str(), name, H5P_DEFAULT, H5P_DEFAULT);
+    REQUIRE(attr >= 0);
+    REQUIRE(H5Aread(attr, memory_type, &value) >= 0);
+    H5Aclose(attr);
+    return value;
+  }
+
+  std::string string_attribute(const std::string& object, const char* name) const {
+    const hid_t attr = H5Aopen_by_name(file, object.c_str(), name, H5P_DEFAULT, H5P_DEFAULT);
+    REQUIRE(attr >= 0);
+    const hid_t type = H5Aget_type(attr);
+    std::string value(H5Tget_size(type), '\0');
+    REQUIRE(H5Aread(attr, type, value.data()) >= 0);
+    H5Tclose(type);
+    H5Aclose(attr);
+    return value.substr(0, value.find('\0'));
+  }
+};
+
+}  // namespace
+
+TEST_CASE("ResultsH5 writes steps that read back exactly") {
+  TempDir dir;
+  const fs::path file = dir.path / "results.h5";
+  const ParticleSnapshot first = make_snapshot(0, 0.0, 4);
+  const ParticleSnapshot second = make_snapshot(1250, 0.1 + 1.0 / 3.0, 5);
+  {
+    ResultsH5 results(file, OutputFields{});
+    results.write(first);
+    results.write(second);
+    REQUIRE(results.written().size() == 2);
+    CHECK(results.written()[1].step == 1250);
+    CHECK(results.written()[1].time == second.time);
+    CHECK(results.written()[1].count == 5);
+    const std::uintmax_t per_particle = (3 + 3 + 6 + 6 + 1 + 1) * sizeof(double) + 4;
+    CHECK(results.bytes_written() == (4 + 5) * per_particle);
+  }
+
+  CHECK(ResultsH5::group_name(1250) == "/steps/00001250");
+  H5Reader h5(file);
+  for (const ParticleSnapshot* s : {&first, &second}) {
+    const std::string group = ResultsH5::group_name(s->step);
+    CAPTURE(group);
+    CHECK(h5.attribute<double>(group, "time", H5T_NATIVE_DOUBLE) == s->time);
+    CHECK(h5.attribute<std::int64_t>(group, "step", H5T_NATIVE_INT64) == s->step);
+    const hsize_t n = s->count;
+    CHECK(h5.dims(group + "/position") == std::vector<hsize_t>{n, 3});
+    CHECK(h5.dims(group + "/stress") == std::vector<hsize_t>{n, 6});
+    CHECK(h5.dims(group + "/mass") == std::vector<hsize_t>{n});
+    CHECK(h5.read<double>(group + "/position", H5T_NATIVE_DOUBLE, n * 3) == s->position);
+    CHECK(h5.read<double>(group + "/velocity", H5T_NATIVE_DOUBLE, n * 3) == s->velocity);
+    CHECK(h5.read<double>(group + "/stress", H5T_NATIVE_DOUBLE, n * 6) == s->stress);
+    CHECK(h5.read<double>(group + "/strain", H5T_NATIVE_DOUBLE, n * 6) == s->strain);
+    CHECK(h5.read<double>(group + "/volume", H5T_NATIVE_DOUBLE, n) == s->volume);
+    CHECK(h5.read<double>(group + "/mass", H5T_NATIVE_DOUBLE, n) == s->mass);
+    CHECK(h5.read<std::int32_t>(group + "/material", H5T_NATIVE_INT32, n) == s->material);
+    CHECK(h5.string_attribute(group + "/position", "units") == "m");
+    CHECK(h5.string_attribute(group + "/velocity", "units") == "m/s");
+    CHECK(h5.string_attribute(group + "/stress", "units") == "Pa");
+    CHECK(h5.string_attribute(group + "/strain", "units") == "-");
+    CHECK(h5.string_attribute(group + "/volume", "units") == "m^3");
+    CHECK(h5.string_attribute(group + "/mass", "units") == "kg");
+  }
+}
+
+TEST_CASE("ResultsH5 writes only the enabled fields, and empty steps") {
+  TempDir dir;
+  const fs::path file = dir.path / "results.h5";
+  OutputFields fields;
+  fields.strain = false;
+  fields.mass = false;
+  ParticleSnapshot empty = make_snapshot(3, 1.5, 0);
+  {
+    ResultsH5 results(file, fields);
+    results.write(empty);
+    CHECK(results.bytes_written() == 0);
+
+    const std::string xdmf = xdmf_document("results.h5", results);
+    CHECK(contains(xdmf, "results.h5:/steps/00000003/stress"));
+    CHECK_FALSE(contains(xdmf, "strain"));
+    CHECK_FALSE(contains(xdmf, "mass"));
+  }
+  H5Reader h5(file);
+  CHECK(h5.dims("/steps/00000003/position") == std::vector<hsize_t>{0, 3});
+  CHECK(h5.dims("/steps/00000003/volume") == std::vector<hsize_t>{0});
+  CHECK(h5.exists("/steps/00000003/stress"));
+  CHECK_FALSE(h5.exists("/steps/00000003/strain"));
+  CHECK_FALSE(h5.exists("/steps/00000003/mass"));
+}
+
+TEST_CASE("ResultsH5 rejects bad snapshots and reports errors with the file name") {
+  TempDir dir;
+  const fs::path file = dir.path / "results.h5";
+  {
+    ResultsH5 results(file, OutputFields{});
+    ParticleSnapshot bad = make_snapshot(1, 0.5, 3);
+    bad.stress.pop_back();
+    CHECK_THROWS_AS(results.write(bad), std::invalid_argument);
+    CHECK(results.written().empty());
+
+    results.write(make_snapshot(2, 1.0, 3));
+    try {
+      results.write(make_snapshot(2, 1.0, 3));
+      FAIL("writing a step twice must throw");
+    } catch (const std::runtime_error& e) {
+      CHECK(contains(e.what(), file.string()));
+      CHECK(contains(e.what(), "/steps/00000002"));
+    }
+    CHECK(results.written().size() == 1);
+  }
+  H5Reader h5(file);
+  CHECK_FALSE(h5.exists("/steps/00000001"));
+
+  const fs::path missing = dir.path / "no_such_dir" / "results.h5";
+  try {
+    ResultsH5 results(missing, OutputFields{});
+    FAIL("creating a file in a missing directory must throw");
+  } catch (const std::runtime_error& e) {
+    CHECK(contains(e.what(), missing.string()));
+  }
+}
+
+TEST_CASE("XDMF indexes every written step") {
+  TempDir dir;
+  ResultsH5 results(dir.path / "results.h5", OutputFields{});
+  const double time = 0.1 + 0.2;
+  results.write(make_snapshot(0, 0.0, 4));
+  results.write(make_snapshot(20, time, 7));
+
+  const std::string xdmf = xdmf_document("results.h5", results);
+  CHECK(contains(xdmf, "<Xdmf Version=\"3.0\">"));
+  CHECK(contains(xdmf, "GridType=\"Collection\" CollectionType=\"Temporal\""));
+  CHECK(contains(xdmf, "<Time Value=\"0\"/>"));
+  CHECK(contains(xdmf, "<Time Value=\"0.30000000000000004\"/>"));
+  CHECK(contains(xdmf, "NumberOfElements=\"4\" NodesPerElement=\"1\""));
+  CHECK(contains(xdmf, "NumberOfElements=\"7\" NodesPerElement=\"1\""));
+  CHECK(contains(xdmf, "Dimensions=\"4 3\" NumberType=\"Float\" Precision=\"8\">"
+                       "results.h5:/steps/00000000/position</DataItem>"));
+  CHECK(contains(xdmf, "Dimensions=\"7 3\" NumberType=\"Float\" Precision=\"8\">"
+                       "results.h5:/steps/00000020/position</DataItem>"));
+  CHECK(contains(xdmf, "<Attribute Name=\"stress\" AttributeType=\"Tensor6\""));
+  CHECK(contains(xdmf, "Dimensions=\"7 6\" NumberType=\"Float\" Precision=\"8\">"
+                       "results.h5:/steps/00000020/strain</DataItem>"));
+  CHECK(contains(xdmf, "Dimensions=\"7\" NumberType=\"Int\" Precision=\"4\">"
+                       "results.h5:/steps/00000020/material</DataItem>"));
+  CHECK(contains(xdmf, "<Attribute Name=\"velocity\" AttributeType=\"Vector\""));
+  CHECK(contains(xdmf, "<Attribute Name=\"mass\" AttributeType=\"Scalar\""));
+
+  const fs::path path = dir.path / "results.xdmf";
+  write_xdmf(path, "results.h5", results);
+  CHECK(read_text(path) == xdmf);
+
+  OutputFields no_position;
+  no_position.position = false;
+  ResultsH5 without(dir.path / "other.h5", no_position);
+  CHECK_THROWS_AS(xdmf_document("other.h5", without), std::invalid_argument);
+}
+
+TEST_CASE("timeseries CSV: header, and rows that parse back exactly") {
+  TempDir dir;
+  const fs::path path = dir.path / "timeseries.csv";
+  TimeseriesRow row;
+  row.step = 42;
+  row.time = 1.0 / 3.0;
+  row.kinetic_energy = 2.0 / 3.0 * 1e-7;
+  row.strain_energy = std::nextafter(1.0, 2.0);
+  BodyMeans block, ground;
+  for (std::size_t i = 0; i < 6; ++i) {
+    block.stress[i] = -1.0e5 / static_cast<double>(i + 3);
+    block.strain[i] = 1.0e-5 * std::sqrt(static_cast<double>(i + 2));
+    ground.stress[i] = std::numeric_limits<double>::denorm_min() * static_cast<double>(i);
+    ground.strain[i] = std::numeric_limits<double>::max() / static_cast<double>(i + 1);
+  }
+  row.bodies = {block, ground};
+  {
+    TimeseriesCsv csv(path, {"block", "ground"});
+    csv.write(row);
+    // Flushed after each row: the file is complete while still open.
+    const std::vector<std::string> lines = split(read_text(path), '\n');
+    REQUIRE(lines.size() == 2);
+    const std::vector<std::string> header = split(lines[0], ',');
+    REQUIRE(header.size() == 4 + 2 * 12);
+    CHECK(lines[0].rfind("step,time,kinetic_energy,strain_energy,block.stress_xx,"
+                         "block.stress_yy,block.stress_zz,block.stress_yz,block.stress_xz,"
+                         "block.stress_xy,block.strain_xx,",
+                         0) == 0);
+    CHECK(header[15] == "block.strain_xy");
+    CHECK(header[16] == "ground.stress_xx");
+    CHECK(header.back() == "ground.strain_xy");
+
+    const std::vector<std::string> cells = split(lines[1], ',');
+    REQUIRE(cells.size() == header.size());
+    CHECK(cells[0] == "42");
+    std::vector<double> expected = {row.time, row.kinetic_energy, row.strain_energy};
+    for (const BodyMeans& body : row.bodies) {
+      expected.insert(expected.end(), body.stress.begin(), body.stress.end());
+      expected.insert(expected.end(), body.strain.begin(), body.strain.end());
+    }
+    for (std::size_t i = 1; i < cells.size(); ++i) {
+      CAPTURE(header[i]);
+      CHECK(std::strtod(cells[i].c_str(), nullptr) == expected[i - 1]);
+    }
+
+    row.bodies.pop_back();
+    CHECK_THROWS_AS(csv.write(row), std::invalid_argument);
+  }
+
+  const fs::path missing = dir.path / "no_such_dir" / "timeseries.csv";
+  try {
+    TimeseriesCsv csv(missing, {});
+    FAIL("opening a file in a missing directory must throw");
+  } catch (const std::runtime_error& e) {
+    CHECK(contains(e.what(), missing.string()));
+  }
+}
+
+TEST_CASE("summary JSON escapes strings and writes null for non-finite numbers") {
+  RunSummary summary;
+  summary.case_name = "say \"hi\"\\now";
+  summary.case_file = "cases/a\tb\x01.toml";
+  summary.particles = 123456;
+  summary.steps = 1000;
+  summary.dt = 1.0e-4 / 3.0;
+  summary.particle_steps_per_second = std::numeric_limits<double>::quiet_NaN();
+  summary.output_seconds = std::numeric_limits<double>::infinity();
+  BodySummary body;
+  body.name = "block";
+  body.mean_stress = {1.5, -2.0, 0.1, 0.0, 0.0, 3.0e-300};
+  summary.bodies = {body};
+  summary.errors = {{"l2_displacement", 0.25}, {"max_stress", std::nan("")}};
+
+  const std::string json = summary_json(summary);
+  CHECK(contains(json, R"("case": "say \"hi\"\\now",)"));
+  CHECK(contains(json, R"("case_file": "cases/a\tb\u0001.toml",)"));
+  CHECK(contains(json, R"("status": "completed",)"));
+  CHECK(contains(json, R"("particles": 123456,)"));
+  CHECK(contains(json, R"("steps": 1000,)"));
+  CHECK(contains(json, "\"dt\": 3.3333333333333335e-05,"));
+  CHECK(contains(json, "\"particle_steps_per_second\": null,"));
+  CHECK(contains(json, "\"output_seconds\": null,"));
+  CHECK(contains(json, R"("name": "block")"));
+  CHECK(contains(json, R"("mean_stress": {"xx": 1.5, "yy": -2, "zz": 0.10000000000000001, )"
+                       R"("yz": 0, "xz": 0, "xy": 3.0000000000000002e-300})"));
+  CHECK(contains(json, R"("l2_displacement": 0.25,)"));
+  CHECK(contains(json, R"("max_stress": null)"));
+  CHECK_FALSE(contains(json, "nan"));
+  CHECK_FALSE(contains(json, "inf"));
+
+  TempDir dir;
+  write_summary(dir.path / "summary.json", summary);
+  CHECK(read_text(dir.path / "summary.json") == json);
+
+  const RunSummary empty;
+  const std::string minimal = summary_json(empty);
+  CHECK(contains(minimal, "\"bodies\": [],"));
+  CHECK(contains(minimal, "\"errors\": {}\n}"));
+}
+
+TEST_CASE("write_file_atomically replaces files and leaves no temporary behind") {
+  TempDir dir;
+  const fs::path path = dir.path / "out.txt";
+  write_file_atomically(path, "first version, longer than the second\n");
+  write_file_atomically(path, "second\n");
+  CHECK(read_text(path) == "second\n");
+  write_file_atomically(path, "");
+  CHECK(read_text(path).empty());
+  std::vector<fs::path> entries;
+  for (const fs::directory_entry& entry : fs::directory_iterator(dir.path))
+    entries.push_back(entry.path().filename());
+  CHECK(entries == std::vector<fs::path>{"out.txt"});
+
+  const fs::path missing = dir.path / "no_such_dir" / "out.txt";
+  try {
+    write_file_atomically(missing, "text");
+    FAIL("writing into a missing directory must throw");
+  } catch (const std::runtime_error& e) {
+    CHECK(contains(e.what(), missing.string()));
+    CHECK(contains(e.what(), "No such file or directory"));
+  }
+
+  // Renaming onto a directory fails after the temporary was written: it must
+  // be removed again.
+  fs::create_directory(dir.path / "taken");
+  CHECK_THROWS_AS(write_file_atomically(dir.path / "taken", "text"), std::runtime_error);
+  std::size_t count = 0;
+  for ([[maybe_unused]] const fs::directory_entry& entry : fs::directory_iterator(dir.path))
+    ++count;
+  CHECK(count == 2);
+}
