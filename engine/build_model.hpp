@@ -1,0 +1,126 @@
+// Builds the Model of a Case: the grid, particles filling each body's box at
+// its spacing (one batch per body, of one material), velocity constraints on
+// node sets, then the first sort. Volumes are per unit thickness in 2D and
+// per unit cross-section in 1D.
+#pragma once
+#include <cmath>
+#include <type_traits>
+
+#include "engine/particle_sort.hpp"
+#include "io/case_file.hpp"
+#include "io/case_reader.hpp"
+
+namespace flowmpm {
+
+template <int D, class Shape>
+void build_model(const Case& c, Model<D, Shape>& model) {
+  Vec<D> origin, h;
+  Index<D> cells;
+  for (int d = 0; d < D; ++d) {
+    origin[d] = c.grid.origin[d];
+    h[d] = c.grid.cell_size[d];
+    cells[d] = c.grid.cells[d];
+  }
+  model.grid = Grid<D>(origin, h, cells);
+  model.blocks = BlockLayout<D, Shape>(cells);
+  for (const auto& m : c.materials) model.materials.push_back(m.model);
+  for (int d = 0; d < D; ++d) model.gravity[d] = c.gravity[d];
+  model.flip_fraction = c.flip_fraction;
+  model.dt = c.dt;
+
+  double lightest = std::numeric_limits<double>::infinity();
+  for (std::size_t bi = 0; bi < c.bodies.size(); ++bi) {
+    const BodySpec& body = c.bodies[bi];
+    ParticleBatch<D> batch;
+    batch.body = static_cast<int>(bi);
+    batch.material = body.material;
+    Index<D> count;
+    std::size_t n = 1;
+    double volume = 1.0;
+    for (int d = 0; d < D; ++d) {
+      // Whole spacings that fit in the box, centred in it.
+      count[d] = std::max(1, static_cast<int>(std::floor((body.box_max[d] - body.box_min[d]) / body.spacing[d] + 1e-9)));
+      n *= static_cast<std::size_t>(count[d]);
+      volume *= body.spacing[d];
+    }
+    const double rho = density(model.materials[body.material]);
+    Vec<D> v0;
+    for (int d = 0; d < D; ++d) v0[d] = body.velocity[d];
+    for (std::size_t p = 0; p < n; ++p) {
+      Vec<D> x;
+      std::size_t rest = p;
+      for (int d = 0; d < D; ++d) {
+        const int i = static_cast<int>(rest % count[d]);
+        rest /= count[d];
+        const double margin = 0.5 * ((body.box_max[d] - body.box_min[d]) - count[d] * body.spacing[d]);
+        x[d] = body.box_min[d] + margin + (i + 0.5) * body.spacing[d];
+      }
+      batch.x.push_back(x);
+    }
+    batch.v.assign(n, v0);
+    batch.mass.assign(n, rho * volume);
+    batch.volume.assign(n, volume);
+    batch.stress.assign(n, Voigt{});
+    batch.strain.assign(n, Voigt{});
+    batch.states = std::visit(
+        [&](const auto& material) -> MaterialStates {
+          using M = std::decay_t<decltype(material)>;
+          // Models without internal variables store nothing per particle.
+          if constexpr (std::is_empty_v<typename M::State>) return StateArray<M>{};
+          else return StateArray<M>(n);
+        },
+        model.materials[body.material]);
+    lightest = std::min(lightest, rho * volume);
+    model.batches.push_back(std::move(batch));
+  }
+  // A node holding less than a millionth of the lightest particle's mass
+  // only sees the far tail of a shape function: its v = p / m is noise.
+  model.mass_threshold = 1e-6 * lightest;
+
+  for (const NodeSetSpec& set : c.node_sets) {
+    std::vector<std::size_t> nodes;
+    const auto& g = model.grid;
+    for (std::size_t n = 0; n < g.node_count(); ++n) {
+      Index<D> i;
+      std::size_t rest = n;
+      for (int d = 0; d < D; ++d) {
+        i[d] = static_cast<int>(rest % g.nodes[d]);
+        rest /= g.nodes[d];
+      }
+      const Vec<D> x = g.node_position(i);
+      bool selected = true;
+      for (int d = 0; d < D; ++d) {
+        const double tol = 1e-6 * g.h[d];
+        if (set.is_plane) {
+          if (d == set.axis) selected = selected && std::abs(x[d] - set.at) <= tol;
+        } else {
+          selected = selected && x[d] >= set.box_min[d] - tol && x[d] <= set.box_max[d] + tol;
+        }
+      }
+      if (selected) nodes.push_back(n);
+    }
+    if (nodes.empty()) {
+      throw CaseError(c.file.string() + ": node_sets \"" + set.name + "\": selects no grid node");
+    }
+    for (int d = 0; d < D; ++d) {
+      if (set.velocity[d]) model.constraints.push_back({set.name, nodes, d, *set.velocity[d]});
+    }
+  }
+
+  // Every particle must start where its stencil has grid nodes.
+  for (const auto& batch : model.batches) {
+    for (const auto& x : batch.x) {
+      const Index<D> cell = cell_of<D, Shape>(model.grid, x);
+      for (int d = 0; d < D; ++d) {
+        if (cell[d] < Shape::reach_below || cell[d] + Shape::reach_above > cells[d]) {
+          throw CaseError(c.file.string() + ": bodies \"" + c.bodies[batch.body].name +
+                          "\": particles lie in the outermost cells, where the " + Shape::name +
+                          " shape function has no nodes; enlarge the grid");
+        }
+      }
+    }
+  }
+  sort_particles(model);
+}
+
+}  // namespace flowmpm

@@ -1,0 +1,66 @@
+// Everything one explicit step reads and writes: the grid, the particle
+// batches and their block layout, the materials, velocity constraints,
+// gravity and the clock. Built from a Case by build_model().
+#pragma once
+#include <atomic>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "engine/blocks.hpp"
+#include "engine/grid.hpp"
+#include "engine/particles.hpp"
+#include "engine/time_function.hpp"
+#include "materials/material.hpp"
+#include "materials/stress_state.hpp"
+
+namespace flowmpm {
+
+// Prescribed velocity of one axis on a set of nodes.
+struct NodeConstraint {
+  std::string name;
+  std::vector<std::size_t> nodes;
+  int axis = 0;
+  TimeFunction velocity;  // m/s
+};
+
+// Problems found by a stage, reported after the step by the time loop.
+struct StepFlags {
+  std::atomic<bool> resort_needed{false};
+  std::atomic<bool> failed{false};
+  std::mutex mutex;
+  std::string problem;  // first problem found, for the error message
+
+  void fail(const std::string& what) {
+    std::lock_guard lock(mutex);
+    if (!failed.exchange(true)) problem = what;
+  }
+};
+
+template <int D, class Shape>
+struct Model {
+  static constexpr StressState stress_state =
+      D == 3 ? StressState::three_d : D == 2 ? StressState::plane_strain : StressState::uniaxial_stress;
+
+  Grid<D> grid;
+  BlockLayout<D, Shape> blocks;
+  std::vector<ParticleBatch<D>> batches;
+  std::vector<Material> materials;
+  std::vector<NodeConstraint> constraints;
+  Vec<D> gravity = Vec<D>::Zero();
+  double flip_fraction = 1.0;
+  // Nodes lighter than this carry no velocity (v = p / m would be noise).
+  double mass_threshold = 0.0;
+
+  double t = 0.0, dt = 0.0;  // time at the start of the step, time step (s)
+  std::int64_t step = 0;
+  StepFlags flags;
+
+  std::size_t particle_count() const {
+    std::size_t n = 0;
+    for (const auto& b : batches) n += b.size();
+    return n;
+  }
+};
+
+}  // namespace flowmpm

@@ -1,0 +1,39 @@
+// Particles of one material: a batch, stored as one array per field
+// (structure of arrays) and kept sorted by grid block, so that neighbours in
+// memory are neighbours in space. Fields no model of the scene reads are not
+// stored.
+#pragma once
+#include <cstdint>
+#include <variant>
+#include <vector>
+
+#include "engine/types.hpp"
+#include "materials/material.hpp"
+
+namespace flowmpm {
+
+// The state arrays of a batch's model (empty for models without state).
+template <class Variant>
+struct StateArraysOf;
+template <class... Models>
+struct StateArraysOf<std::variant<Models...>> {
+  using type = std::variant<StateArray<Models>...>;
+};
+using MaterialStates = StateArraysOf<Material>::type;
+
+template <int D>
+struct ParticleBatch {
+  int body = 0;      // index into Case::bodies
+  int material = 0;  // index into Case::materials
+  std::vector<Vec<D>> x, v;                // m, m/s
+  std::vector<double> mass, volume;        // kg, m^3
+  std::vector<Voigt> stress, strain;       // Pa, -
+  MaterialStates states;                   // the model's internal variables
+
+  // Particles of block b are [block_begin[b], block_begin[b + 1]).
+  std::vector<std::uint32_t> block_begin;
+
+  std::size_t size() const { return x.size(); }
+};
+
+}  // namespace flowmpm

@@ -1,0 +1,171 @@
+#include "engine/run_case.hpp"
+
+#include <chrono>
+#include <cmath>
+
+#include <spdlog/spdlog.h>
+
+#include "engine/shape_linear.hpp"
+#include "engine/simulation.hpp"
+#include "io/results_h5.hpp"
+#include "io/xdmf.hpp"
+
+namespace flowmpm {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+std::string stored_fields(int dimension) {
+  const std::string vec = dimension == 1 ? "scalar" : std::to_string(dimension) + "-vector";
+  return "x, v (" + vec + "), mass, volume, stress, strain (6 Voigt)";
+}
+
+template <int D, class Shape>
+void log_model(const Case& c, const Model<D, Shape>& model, const Wiring& wiring) {
+  spdlog::info("model: {}D ({}), scheme {} [{}], shape function {}, velocity update {}{}", D,
+               stress_state_name(Model<D, Shape>::stress_state), scheme_name(c.scheme),
+               wiring.describe(), Shape::name, c.velocity_update,
+               c.velocity_update == "blend" ? " (FLIP fraction " + std::to_string(c.flip_fraction) + ")" : "");
+  std::string cells;
+  for (int d = 0; d < D; ++d) cells += (d ? " x " : "") + std::to_string(model.grid.cells[d]);
+  spdlog::info("grid: {} cells, {} nodes, {} blocks of {}^{} cells ({} occupied)", cells,
+               model.grid.node_count(), model.blocks.block_count, BlockLayout<D, Shape>::block_cells, D,
+               model.blocks.occupied.size());
+  for (const auto& b : model.batches) {
+    const auto& m = c.materials[b.material];
+    spdlog::info("body '{}': {} particles, material '{}' ({}, density {} kg/m^3, wave speed {:.4g} m/s)",
+                 c.bodies[b.body].name, b.size(), m.name, type_name(m.model), density(m.model),
+                 wave_speed(m.model));
+  }
+  spdlog::info("particle fields stored: {}", stored_fields(D));
+  for (const auto& k : model.constraints) {
+    spdlog::info("node set '{}': {} nodes, velocity prescribed along {}", k.name, k.nodes.size(),
+                 "xyz"[k.axis]);
+  }
+  if (model.gravity.norm() > 0.0) spdlog::info("gravity: {} m/s^2", model.gravity.norm());
+  const StableStep stable = stable_time_step(c);
+  spdlog::info("time: dt = {} s ({:.3g} of the stable limit {:.4g} s), {} steps to t = {} s", c.dt,
+               c.dt / stable.dt, stable.dt, c.steps, c.end_time());
+}
+
+template <int D, class Shape>
+RunSummary run(const Case& c, const RunOptions& options) {
+  const auto setup_start = Clock::now();
+  Simulation<D, Shape> sim(c);
+  auto& model = sim.model();
+  log_model(c, model, sim.graph().wiring());
+
+  RunSummary summary;
+  summary.case_name = c.name;
+  summary.case_file = c.file.string();
+  summary.scheme = scheme_name(c.scheme);
+  summary.shape_function = Shape::name;
+  summary.velocity_update = c.velocity_update;
+  summary.dimension = D;
+  summary.threads = options.threads;
+  summary.particles = model.particle_count();
+  summary.nodes = model.grid.node_count();
+  summary.dt = c.dt;
+  summary.end_time = c.end_time();
+  summary.setup_seconds = options.setup_seconds + seconds_since(setup_start);
+
+  const auto& dir = c.output.directory;
+  std::vector<std::string> body_names;
+  for (const auto& b : c.bodies) body_names.push_back(b.name);
+  std::optional<ResultsH5> h5;
+  std::optional<TimeseriesCsv> csv;
+  if (options.write_results) {
+    std::filesystem::create_directories(dir);
+    h5.emplace(dir / "results.h5", c.output.fields);
+    csv.emplace(dir / "timeseries.csv", body_names);
+  }
+  const std::int64_t every = c.output.every > 0 ? c.output.every : std::max<std::int64_t>(1, c.steps / 20);
+  auto write_output = [&] {
+    const auto t0 = Clock::now();
+    if (options.write_results) {
+      h5->write(sim.snapshot());
+      write_xdmf(dir / "results.xdmf", "results.h5", *h5);
+      csv->write(sim.diagnostics(c.bodies.size()));
+    }
+    summary.output_seconds += seconds_since(t0);
+  };
+  auto finish = [&](const std::string& status) {
+    summary.status = status;
+    summary.steps = model.step;
+    summary.particle_steps_per_second =
+        summary.step_loop_seconds > 0.0
+            ? static_cast<double>(summary.particles) * static_cast<double>(model.step) / summary.step_loop_seconds
+            : 0.0;
+    const TimeseriesRow final_state = sim.diagnostics(c.bodies.size());
+    summary.bodies.clear();
+    for (std::size_t i = 0; i < c.bodies.size(); ++i) {
+      summary.bodies.push_back({c.bodies[i].name, final_state.bodies[i].stress, final_state.bodies[i].strain});
+    }
+    if (options.write_results) write_summary(dir / "summary.json", summary);
+  };
+
+  write_output();
+  auto last_progress = Clock::now();
+  const auto loop_start = Clock::now();
+  try {
+    while (model.step < c.steps) {
+      if (options.interrupt && options.interrupt->load()) {
+        write_output();
+        finish("interrupted at step " + std::to_string(model.step));
+        throw SimulationError("interrupted at step " + std::to_string(model.step) + " (t = " +
+                              std::to_string(model.t) + " s); results up to this step are written");
+      }
+      const auto t0 = Clock::now();
+      sim.advance();
+      summary.step_loop_seconds += seconds_since(t0);
+      if (model.step % every == 0 || model.step == c.steps) write_output();
+      if (seconds_since(last_progress) >= options.progress_seconds) {
+        last_progress = Clock::now();
+        const double rate = static_cast<double>(summary.particles) * static_cast<double>(model.step) /
+                            summary.step_loop_seconds;
+        const double eta = seconds_since(loop_start) / static_cast<double>(model.step) *
+                           static_cast<double>(c.steps - model.step);
+        spdlog::info("step {}/{} ({:.0f}%), t = {:.6g} s, {:.3g} particle-steps/s, ETA {:.0f} s", model.step,
+                     c.steps, 100.0 * static_cast<double>(model.step) / static_cast<double>(c.steps), model.t,
+                     rate, eta);
+      }
+    }
+  } catch (const SimulationError& e) {
+    if (summary.status == "completed") finish(std::string("failed: ") + e.what());
+    throw;
+  }
+  finish("completed");
+  return summary;
+}
+
+template <int D>
+RunSummary run_dimension(const Case& c, const RunOptions& options) {
+  return run<D, LinearShape>(c, options);
+}
+
+}  // namespace
+
+RunSummary run_case(const Case& c, const RunOptions& options) {
+  switch (c.dimension) {
+    case 1: return run_dimension<1>(c, options);
+    case 2: return run_dimension<2>(c, options);
+    default: return run_dimension<3>(c, options);
+  }
+}
+
+void describe_case(const Case& c) {
+  auto describe = [&]<int D>() {
+    Simulation<D, LinearShape> sim(c);
+    log_model(c, sim.model(), sim.graph().wiring());
+  };
+  switch (c.dimension) {
+    case 1: describe.template operator()<1>(); break;
+    case 2: describe.template operator()<2>(); break;
+    default: describe.template operator()<3>(); break;
+  }
+}
+
+}  // namespace flowmpm

@@ -1,0 +1,123 @@
+// A running simulation of one case: the Model, the step graph wired for the
+// case's scheme, and what the time loop and the writers read off it.
+#pragma once
+#include <functional>
+#include <stdexcept>
+#include <string>
+
+#include "engine/build_model.hpp"
+#include "engine/step_graph.hpp"
+#include "io/snapshot.hpp"
+#include "io/timeseries_csv.hpp"
+#include "tasks/g2p.hpp"
+#include "tasks/grid_update.hpp"
+#include "tasks/p2g.hpp"
+
+namespace flowmpm {
+
+// The solution went wrong (a particle left the grid, a non-finite value).
+class SimulationError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+template <int D, class Shape>
+class Simulation {
+ public:
+  // `observer`, if given, is called as each stage starts (from any thread).
+  explicit Simulation(const Case& c, std::function<void(Stage)> observer = {})
+      : observer_(std::move(observer)),
+        graph_(wiring_of(c.scheme), [this](Stage s) { run_stage(s); }) {
+    build_model(c, model_);
+  }
+
+  // One step through the flow graph (or serially, as the reference).
+  void advance() { finish_step([this] { graph_.run(); }); }
+  void advance_serial() { finish_step([this] { graph_.run_serial(); }); }
+
+  Model<D, Shape>& model() { return model_; }
+  const Model<D, Shape>& model() const { return model_; }
+  const StepGraph& graph() const { return graph_; }
+
+  ParticleSnapshot snapshot() const {
+    ParticleSnapshot s;
+    s.step = model_.step;
+    s.time = model_.t;
+    s.count = model_.particle_count();
+    for (const auto& b : model_.batches) {
+      for (std::size_t p = 0; p < b.size(); ++p) {
+        for (int d = 0; d < 3; ++d) {
+          s.position.push_back(d < D ? b.x[p][d] : 0.0);
+          s.velocity.push_back(d < D ? b.v[p][d] : 0.0);
+        }
+        s.stress.insert(s.stress.end(), b.stress[p].begin(), b.stress[p].end());
+        s.strain.insert(s.strain.end(), b.strain[p].begin(), b.strain[p].end());
+        s.volume.push_back(b.volume[p]);
+        s.mass.push_back(b.mass[p]);
+        s.material.push_back(b.material);
+      }
+    }
+    return s;
+  }
+
+  // Energies and volume-weighted mean stress and strain per body.
+  TimeseriesRow diagnostics(std::size_t body_count) const {
+    TimeseriesRow row;
+    row.step = model_.step;
+    row.time = model_.t;
+    row.bodies.resize(body_count);
+    std::vector<double> body_volume(body_count, 0.0);
+    for (const auto& b : model_.batches) {
+      BodyMeans& means = row.bodies[b.body];
+      for (std::size_t p = 0; p < b.size(); ++p) {
+        row.kinetic_energy += 0.5 * b.mass[p] * b.v[p].squaredNorm();
+        // Elastic strain energy density sigma : eps / 2 (small strain).
+        row.strain_energy += 0.5 * b.volume[p] * double_contraction(b.stress[p], b.strain[p]);
+        for (int i = 0; i < 6; ++i) {
+          means.stress[i] += b.volume[p] * b.stress[p][i];
+          means.strain[i] += b.volume[p] * b.strain[p][i];
+        }
+        body_volume[b.body] += b.volume[p];
+      }
+    }
+    for (std::size_t i = 0; i < body_count; ++i) {
+      for (int k = 0; k < 6; ++k) {
+        row.bodies[i].stress[k] /= body_volume[i];
+        row.bodies[i].strain[k] /= body_volume[i];
+      }
+    }
+    return row;
+  }
+
+ private:
+  void run_stage(Stage s) {
+    if (observer_) observer_(s);
+    switch (s) {
+      case Stage::p2g_momentum: p2g_momentum(model_); break;
+      case Stage::p2g_force: p2g_force(model_); break;
+      case Stage::grid_velocity: grid_velocity(model_); break;
+      case Stage::grid_integrate: grid_integrate(model_); break;
+      case Stage::g2p_motion: g2p_motion(model_); break;
+      case Stage::g2p_stress: g2p_stress(model_); break;
+      // MUSL: mass and momentum mapped again from the updated particles.
+      case Stage::remap: p2g_momentum(model_); break;
+    }
+  }
+
+  template <class RunStep>
+  void finish_step(RunStep&& run_step) {
+    if (model_.flags.resort_needed) sort_particles(model_);
+    run_step();
+    if (model_.flags.failed) {
+      throw SimulationError("step " + std::to_string(model_.step + 1) + " (t = " +
+                            std::to_string(model_.t) + " s): " + model_.flags.problem);
+    }
+    model_.t = static_cast<double>(++model_.step) * model_.dt;
+  }
+
+  Model<D, Shape> model_;
+  std::function<void(Stage)> observer_;
+  StepGraph graph_;
+};
+
+}  // namespace flowmpm

@@ -1,0 +1,341 @@
+#include "io/case_file.hpp"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "io/case_reader.hpp"
+
+namespace flowmpm {
+
+const char* scheme_name(Scheme s) {
+  switch (s) {
+    case Scheme::usf: return "USF";
+    case Scheme::usl: return "USL";
+    case Scheme::musl: return "MUSL";
+  }
+  return "?";
+}
+
+namespace {
+
+constexpr const char* axis_names[3] = {"x", "y", "z"};
+
+std::string fmt(double v) {
+  std::ostringstream s;
+  s.precision(6);
+  s << v;
+  return s.str();
+}
+
+// Applies one --set KEY=VALUE to the document. VALUE is TOML; a value that
+// does not parse as TOML is taken as a bare string (--set analysis.scheme=usf).
+void apply_override(toml::table& root, const std::string& assignment) {
+  const auto eq = assignment.find('=');
+  if (eq == std::string::npos || eq == 0) {
+    throw CaseError("--set " + assignment + ": expected KEY=VALUE, e.g. --set analysis.dt=0.001");
+  }
+  const std::string key = assignment.substr(0, eq);
+  const std::string text = assignment.substr(eq + 1);
+  const std::string source = "--set " + assignment;
+  toml::table parsed;
+  try {
+    parsed = toml::parse("value = " + text, source);
+  } catch (const toml::parse_error&) {
+    parsed = toml::parse("value = \"\"", source);
+    parsed.insert_or_assign("value", text);
+  }
+
+  std::vector<std::string> parts;
+  std::stringstream ss(key);
+  for (std::string part; std::getline(ss, part, '.');) parts.push_back(part);
+  toml::node* node = &root;
+  for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
+    if (toml::table* t = node->as_table()) {
+      if (!t->contains(parts[i])) t->insert(parts[i], toml::table{});
+      node = t->get(parts[i]);
+    } else if (toml::array* a = node->as_array()) {
+      std::size_t index = 0;
+      try {
+        index = std::stoul(parts[i]);
+      } catch (const std::exception&) {
+        throw CaseError(source + ": '" + parts[i] + "' must be an index into an array");
+      }
+      if (index >= a->size()) throw CaseError(source + ": index " + parts[i] + " is out of range");
+      node = a->get(index);
+    } else {
+      throw CaseError(source + ": '" + parts[i] + "' is not a table");
+    }
+  }
+  toml::table* target = node->as_table();
+  if (!target) throw CaseError(source + ": the key's parent is not a table");
+  target->insert_or_assign(parts.back(), *parsed.get("value"));
+}
+
+Vec3 vector_of(TableReader& t, std::string_view key, int dim, Vec3 fallback = {}) {
+  if (!t.has(key)) return fallback;
+  const std::vector<double> values = t.numbers(key, static_cast<std::size_t>(dim));
+  Vec3 v{};
+  for (int d = 0; d < dim; ++d) v[d] = values[d];
+  return v;
+}
+
+// A number or an array of `dim` numbers; a single number applies to every axis.
+Vec3 per_axis(TableReader& t, std::string_view key, int dim) {
+  const toml::node* n = t.node(key);
+  Vec3 v{};
+  if (n && n->is_number()) {
+    const double value = t.number(key);
+    for (int d = 0; d < dim; ++d) v[d] = value;
+    return v;
+  }
+  return vector_of(t, key, dim);
+}
+
+TimeFunction time_function(TableReader& t, std::string_view key) {
+  const toml::node* n = t.node(key);
+  if (n->is_number()) return TimeFunction{{{0.0, t.number(key)}}};
+  const std::string expected =
+      "a velocity in m/s, or an array of [time, velocity] pairs with increasing times";
+  const toml::array* points = n->as_array();
+  if (!points || points->empty()) t.fail(key, expected);
+  TimeFunction f;
+  for (const toml::node& p : *points) {
+    const toml::array* pair = p.as_array();
+    if (!pair || pair->size() != 2 || !pair->get(0)->is_number() || !pair->get(1)->is_number()) {
+      t.fail(key, expected);
+    }
+    const double time = *pair->get(0)->value<double>();
+    if (!f.points.empty() && time <= f.points.back().first) t.fail(key, expected);
+    f.points.emplace_back(time, *pair->get(1)->value<double>());
+  }
+  return f;
+}
+
+void read_analysis(TableReader t, Case& c) {
+  c.dimension = static_cast<int>(t.integer("dimension"));
+  t.require(c.dimension >= 1 && c.dimension <= 3, "dimension", "1, 2 or 3");
+  const std::string scheme = t.choice("scheme", {"usf", "usl", "musl"}, "usl");
+  c.scheme = scheme == "usf" ? Scheme::usf : scheme == "usl" ? Scheme::usl : Scheme::musl;
+  c.shape_function = t.choice("shape_function", {"linear"}, "linear");
+  c.velocity_update = t.choice("velocity_update", {"flip", "pic", "blend"}, "flip");
+  if (c.velocity_update == "blend") {
+    c.flip_fraction = t.number("flip_fraction");
+    t.require(c.flip_fraction >= 0.0 && c.flip_fraction <= 1.0, "flip_fraction",
+              "a FLIP fraction in [0, 1]");
+  } else {
+    c.flip_fraction = c.velocity_update == "flip" ? 1.0 : 0.0;
+    if (t.has("flip_fraction")) t.fail("flip_fraction", "no flip_fraction unless velocity_update = \"blend\"");
+  }
+  c.dt = t.number("dt");
+  t.require(c.dt > 0.0, "dt", "a positive time step in s");
+  if (t.has("steps") == t.has("end_time")) {
+    t.fail_table("give exactly one of analysis.steps and analysis.end_time");
+  }
+  if (t.has("steps")) {
+    c.steps = t.integer("steps");
+    t.require(c.steps >= 1, "steps", "a positive number of steps");
+  } else {
+    const double end_time = t.number("end_time");
+    t.require(end_time > 0.0, "end_time", "a positive end time in s");
+    const double steps = std::round(end_time / c.dt);
+    t.require(steps >= 1.0 && std::abs(steps * c.dt - end_time) <= 1e-9 * end_time, "end_time",
+              "a whole number of time steps (end_time / dt = " + fmt(end_time / c.dt) + ")");
+    c.steps = static_cast<std::int64_t>(steps);
+  }
+  c.gravity = vector_of(t, "gravity", c.dimension);
+  t.reject_unknown_keys();
+}
+
+void read_grid(TableReader t, Case& c) {
+  c.grid.origin = vector_of(t, "origin", c.dimension);
+  c.grid.cell_size = per_axis(t, "cell_size", c.dimension);
+  if (!t.has("cell_size")) t.fail("cell_size", "the cell size in m (a number, or one per axis)");
+  for (int d = 0; d < c.dimension; ++d) {
+    t.require(c.grid.cell_size[d] > 0.0, "cell_size", "positive cell sizes in m");
+  }
+  const std::vector<double> cells = t.numbers("cells", static_cast<std::size_t>(c.dimension));
+  c.grid.cells = {1, 1, 1};
+  for (int d = 0; d < c.dimension; ++d) {
+    t.require(cells[d] >= 1.0 && cells[d] == std::floor(cells[d]) && cells[d] < 1e6, "cells",
+              "a whole number of cells (1 to 10^6) per axis");
+    c.grid.cells[d] = static_cast<int>(cells[d]);
+  }
+  t.reject_unknown_keys();
+}
+
+double grid_max(const Case& c, int d) {
+  return c.grid.origin[d] + c.grid.cell_size[d] * c.grid.cells[d];
+}
+
+void read_body(TableReader t, Case& c, std::size_t index) {
+  BodySpec b;
+  b.name = t.string_or("name", "body" + std::to_string(index));
+  const std::string material = t.string("material");
+  b.material = -1;
+  std::string known;
+  for (std::size_t m = 0; m < c.materials.size(); ++m) {
+    if (c.materials[m].name == material) b.material = static_cast<int>(m);
+    known += (known.empty() ? "\"" : ", \"") + c.materials[m].name + "\"";
+  }
+  if (b.material < 0) t.fail("material", "the name of a material in [materials]: " + known);
+  b.box_min = vector_of(t, "min", c.dimension);
+  b.box_max = vector_of(t, "max", c.dimension);
+  if (!t.has("min")) t.fail("min", "the lower corner of the body's box in m");
+  if (!t.has("max")) t.fail("max", "the upper corner of the body's box in m");
+  for (int d = 0; d < c.dimension; ++d) {
+    t.require(b.box_min[d] < b.box_max[d], "max", "a corner above min along every axis");
+    const double tol = 1e-9 * c.grid.cell_size[d];
+    t.require(b.box_min[d] >= c.grid.origin[d] - tol, "min",
+              "a box inside the grid: " + std::string(axis_names[d]) + " >= " + fmt(c.grid.origin[d]));
+    t.require(b.box_max[d] <= grid_max(c, d) + tol, "max",
+              "a box inside the grid: " + std::string(axis_names[d]) + " <= " + fmt(grid_max(c, d)));
+  }
+  if (t.has("particles_per_cell") == t.has("spacing")) {
+    t.fail_table("give exactly one of particles_per_cell (per axis) and spacing (m)");
+  }
+  if (t.has("particles_per_cell")) {
+    const std::int64_t n = t.integer("particles_per_cell");
+    t.require(n >= 1 && n <= 16, "particles_per_cell", "1 to 16 particles per cell per axis");
+    for (int d = 0; d < c.dimension; ++d) b.spacing[d] = c.grid.cell_size[d] / static_cast<double>(n);
+  } else {
+    b.spacing = per_axis(t, "spacing", c.dimension);
+    for (int d = 0; d < c.dimension; ++d) {
+      t.require(b.spacing[d] > 0.0 && b.spacing[d] <= b.box_max[d] - b.box_min[d], "spacing",
+                "a positive particle spacing no larger than the box, in m");
+    }
+  }
+  b.velocity = vector_of(t, "velocity", c.dimension);
+  t.reject_unknown_keys();
+  c.bodies.push_back(b);
+}
+
+int axis_index(TableReader& t, std::string_view key, const std::string& name, int dim) {
+  for (int d = 0; d < dim; ++d)
+    if (name == axis_names[d]) return d;
+  t.fail(key, dim == 1 ? "the axis \"x\"" : dim == 2 ? "an axis, \"x\" or \"y\"" : "an axis, \"x\", \"y\" or \"z\"");
+}
+
+void read_node_set(TableReader t, Case& c, std::size_t index) {
+  NodeSetSpec s;
+  s.name = t.string_or("name", "node_set" + std::to_string(index));
+  if (t.has("plane") == (t.has("min") || t.has("max"))) {
+    t.fail_table("select nodes either by plane = \"x\"|\"y\"|\"z\" with at = coordinate, or by a box min, max");
+  }
+  if (t.has("plane")) {
+    s.is_plane = true;
+    s.axis = axis_index(t, "plane", t.string("plane"), c.dimension);
+    s.at = t.number("at");
+    const double h = c.grid.cell_size[s.axis];
+    const double cell = (s.at - c.grid.origin[s.axis]) / h;
+    t.require(std::abs(cell - std::round(cell)) <= 1e-6 && std::round(cell) >= 0 &&
+                  std::round(cell) <= c.grid.cells[s.axis],
+              "at", "the coordinate of a plane of grid nodes (origin + k * cell_size, k = 0.." +
+                        std::to_string(c.grid.cells[s.axis]) + ")");
+  } else {
+    s.is_plane = false;
+    s.box_min = vector_of(t, "min", c.dimension);
+    s.box_max = vector_of(t, "max", c.dimension);
+    if (!t.has("min") || !t.has("max")) t.fail_table("a box needs both min and max");
+    for (int d = 0; d < c.dimension; ++d) t.require(s.box_min[d] <= s.box_max[d], "max", "max >= min");
+  }
+  TableReader v = t.table("velocity");
+  for (int d = 0; d < c.dimension; ++d) {
+    if (v.has(axis_names[d])) s.velocity[d] = time_function(v, axis_names[d]);
+  }
+  v.reject_unknown_keys();
+  t.reject_unknown_keys();
+  c.node_sets.push_back(s);
+}
+
+void read_output(TableReader t, Case& c) {
+  c.output.directory = t.string_or("directory", "results/" + c.name);
+  c.output.every = t.integer_or("every", 0);
+  t.require(c.output.every >= 0, "every", "a number of steps >= 0 (0: first and last step only)");
+  if (t.has("fields")) {
+    OutputFields f{false, false, false, false, false, false, false};
+    for (const std::string& name : t.strings("fields")) {
+      bool* flag = name == "position" ? &f.position
+                   : name == "velocity" ? &f.velocity
+                   : name == "stress"   ? &f.stress
+                   : name == "strain"   ? &f.strain
+                   : name == "volume"   ? &f.volume
+                   : name == "mass"     ? &f.mass
+                   : name == "material" ? &f.material
+                                        : nullptr;
+      if (!flag) {
+        t.fail("fields", "field names among \"position\", \"velocity\", \"stress\", \"strain\", "
+                         "\"volume\", \"mass\", \"material\"");
+      }
+      *flag = true;
+    }
+    f.position = true;  // the XDMF geometry needs it
+    c.output.fields = f;
+  }
+  t.reject_unknown_keys();
+}
+
+}  // namespace
+
+StableStep stable_time_step(const Case& c) {
+  double h_min = std::numeric_limits<double>::infinity();
+  for (int d = 0; d < c.dimension; ++d) h_min = std::min(h_min, c.grid.cell_size[d]);
+  StableStep result{std::numeric_limits<double>::infinity(), ""};
+  for (const auto& m : c.materials) {
+    const double dt = h_min / wave_speed(m.model);
+    if (dt < result.dt) result = {dt, m.name};
+  }
+  return result;
+}
+
+Case read_case(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
+  toml::table root;
+  try {
+    root = toml::parse_file(file.string());
+  } catch (const toml::parse_error& e) {
+    const auto& where = e.source();
+    throw CaseError(file.string() + ":" + std::to_string(where.begin.line) + ": not valid TOML: " +
+                    std::string(e.description()));
+  }
+  for (const std::string& assignment : overrides) apply_override(root, assignment);
+
+  Case c;
+  c.file = file;
+  TableReader t(root, "", file.string());
+  c.name = t.string_or("name", file.stem().string());
+  read_analysis(t.table("analysis"), c);
+  read_grid(t.table("grid"), c);
+
+  // Each key of [materials] names a material with its own table.
+  TableReader materials = t.table("materials");
+  for (auto&& [key, value] : *root.get("materials")->as_table()) {
+    TableReader m = materials.table(key.str());
+    c.materials.push_back({std::string(key.str()), read_material(m)});
+  }
+  if (c.materials.empty()) materials.fail_table("define at least one material, e.g. [materials.steel]");
+
+  const auto bodies = t.tables("bodies");
+  if (bodies.empty()) t.fail("bodies", "at least one [[bodies]] table");
+  for (std::size_t i = 0; i < bodies.size(); ++i) read_body(bodies[i], c, i);
+  const auto node_sets = t.tables("node_sets");
+  for (std::size_t i = 0; i < node_sets.size(); ++i) read_node_set(node_sets[i], c, i);
+  if (t.has("output")) {
+    read_output(t.table("output"), c);
+  } else {
+    c.output.directory = "results/" + c.name;
+  }
+  t.reject_unknown_keys();
+
+  // The explicit step is stable only below the time a P wave takes to cross
+  // the smallest cell (CFL number 1).
+  const StableStep stable = stable_time_step(c);
+  if (c.dt > stable.dt) {
+    TableReader analysis = t.table("analysis");
+    analysis.fail("dt", "a time step no larger than the stable limit h/c = " + fmt(stable.dt) +
+                            " s (smallest cell over the P-wave speed of material \"" +
+                            stable.material + "\")");
+  }
+  return c;
+}
+
+}  // namespace flowmpm

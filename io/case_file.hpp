@@ -1,0 +1,87 @@
+// A case file (TOML) read into typed, validated structs. Nothing downstream
+// looks up a string: the engine is built from this Case alone. Units are SI
+// throughout (m, s, kg, Pa). See README.md "Case files" for every key.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "engine/time_function.hpp"
+#include "io/snapshot.hpp"
+#include "materials/material.hpp"
+
+namespace flowmpm {
+
+enum class Scheme { usf, usl, musl };
+const char* scheme_name(Scheme s);
+
+using Vec3 = std::array<double, 3>;  // a point or vector; unused axes are 0
+
+struct GridSpec {
+  Vec3 origin{};
+  Vec3 cell_size{1.0, 1.0, 1.0};
+  std::array<int, 3> cells{1, 1, 1};
+};
+
+struct BodySpec {
+  std::string name;
+  int material = 0;           // index into Case::materials
+  Vec3 box_min{}, box_max{};  // the box filled with particles
+  Vec3 spacing{};             // particle spacing per axis (m)
+  Vec3 velocity{};            // initial velocity (m/s)
+};
+
+struct NodeSetSpec {
+  std::string name;
+  // Nodes with x_axis == at (plane), or inside [box_min, box_max] (box).
+  bool is_plane = true;
+  int axis = 0;
+  double at = 0.0;
+  Vec3 box_min{}, box_max{};
+  // Prescribed velocity per axis (m/s) as a function of time; absent = free.
+  std::array<std::optional<TimeFunction>, 3> velocity;
+};
+
+struct OutputSpec {
+  std::filesystem::path directory;
+  std::int64_t every = 0;  // steps between output steps (0: first and last only)
+  OutputFields fields;
+};
+
+struct Case {
+  std::string name;
+  std::filesystem::path file;
+  int dimension = 3;
+  Scheme scheme = Scheme::usl;
+  std::string shape_function = "linear";
+  std::string velocity_update = "flip";
+  double flip_fraction = 1.0;  // 1: FLIP, 0: PIC
+  double dt = 0.0;             // s
+  std::int64_t steps = 0;
+  double end_time() const { return dt * static_cast<double>(steps); }
+  Vec3 gravity{};              // m/s^2
+  GridSpec grid;
+  std::vector<NamedMaterial> materials;
+  std::vector<BodySpec> bodies;
+  std::vector<NodeSetSpec> node_sets;
+  OutputSpec output;
+};
+
+// Reads and validates a case. `overrides` are "dotted.key=VALUE" strings
+// (VALUE in TOML syntax) applied before validation, as from --set.
+// Throws CaseError with a message naming file, line, key and what was
+// expected.
+Case read_case(const std::filesystem::path& file, const std::vector<std::string>& overrides = {});
+
+// Largest stable time step h_min / c_max of a case (s), and the material
+// that sets it.
+struct StableStep {
+  double dt;
+  std::string material;
+};
+StableStep stable_time_step(const Case& c);
+
+}  // namespace flowmpm

@@ -1,0 +1,182 @@
+#include "io/case_reader.hpp"
+
+#include <cmath>
+#include <sstream>
+
+namespace flowmpm {
+namespace {
+
+std::string describe(const toml::node& node) {
+  switch (node.type()) {
+    case toml::node_type::table: return "a table";
+    case toml::node_type::array: return "an array";
+    case toml::node_type::string: return "the string \"" + std::string(*node.value<std::string>()) + "\"";
+    case toml::node_type::integer: return "the integer " + std::to_string(*node.value<std::int64_t>());
+    case toml::node_type::floating_point: {
+      std::ostringstream s;
+      s << "the number " << *node.value<double>();
+      return s.str();
+    }
+    case toml::node_type::boolean: return *node.value<bool>() ? "true" : "false";
+    default: return "a date or time";
+  }
+}
+
+}  // namespace
+
+std::string source_of(const toml::node& node, const std::string& fallback_file) {
+  const auto& src = node.source();
+  std::string file = src.path ? *src.path : fallback_file;
+  if (src.begin.line == 0) return file;
+  return file + ":" + std::to_string(src.begin.line);
+}
+
+TableReader::TableReader(const toml::table& table, std::string path, std::string file)
+    : table_(&table), path_(std::move(path)), file_(std::move(file)) {}
+
+std::string TableReader::dotted(std::string_view key) const {
+  return path_.empty() ? std::string(key) : path_ + "." + std::string(key);
+}
+
+bool TableReader::has(std::string_view key) const { return table_->contains(key); }
+
+void TableReader::fail_at(const toml::node& node, std::string_view key,
+                          std::string_view expected) const {
+  throw CaseError(source_of(node, file_) + ": " + dotted(key) + ": expected " +
+                  std::string(expected) + ", got " + describe(node));
+}
+
+void TableReader::fail(std::string_view key, std::string_view expected) const {
+  if (const toml::node* n = table_->get(key)) fail_at(*n, key, expected);
+  throw CaseError(source_of(*table_, file_) + ": " + dotted(key) + ": missing; expected " +
+                  std::string(expected));
+}
+
+void TableReader::fail_table(std::string_view message) const {
+  throw CaseError(source_of(*table_, file_) + ": " + (path_.empty() ? "case" : path_) + ": " +
+                  std::string(message));
+}
+
+void TableReader::require(bool ok, std::string_view key, std::string_view expected) {
+  if (!ok) fail(key, expected);
+}
+
+const toml::node& TableReader::required(std::string_view key) {
+  const toml::node* n = table_->get(key);
+  if (!n) {
+    throw CaseError(source_of(*table_, file_) + ": " + dotted(key) + ": missing required key");
+  }
+  used_.emplace(key);
+  return *n;
+}
+
+const toml::node* TableReader::node(std::string_view key) {
+  const toml::node* n = table_->get(key);
+  if (n) used_.emplace(key);
+  return n;
+}
+
+double TableReader::number(std::string_view key) {
+  const toml::node& n = required(key);
+  if (!n.is_number()) fail_at(n, key, "a number");
+  const double value = *n.value<double>();
+  if (!std::isfinite(value)) fail_at(n, key, "a finite number");
+  return value;
+}
+
+double TableReader::number_or(std::string_view key, double fallback) {
+  return has(key) ? number(key) : fallback;
+}
+
+std::optional<double> TableReader::optional_number(std::string_view key) {
+  if (!has(key)) return std::nullopt;
+  return number(key);
+}
+
+std::int64_t TableReader::integer(std::string_view key) {
+  const toml::node& n = required(key);
+  if (!n.is_integer()) fail_at(n, key, "an integer");
+  return *n.value<std::int64_t>();
+}
+
+std::int64_t TableReader::integer_or(std::string_view key, std::int64_t fallback) {
+  return has(key) ? integer(key) : fallback;
+}
+
+std::string TableReader::string(std::string_view key) {
+  const toml::node& n = required(key);
+  if (!n.is_string()) fail_at(n, key, "a string");
+  return std::string(*n.value<std::string>());
+}
+
+std::string TableReader::string_or(std::string_view key, std::string fallback) {
+  return has(key) ? string(key) : fallback;
+}
+
+std::string TableReader::choice(std::string_view key,
+                                std::initializer_list<std::string_view> allowed,
+                                std::string_view fallback) {
+  std::string options;
+  for (auto a : allowed) options += (options.empty() ? "\"" : ", \"") + std::string(a) + "\"";
+  if (!has(key) && !fallback.empty()) return std::string(fallback);
+  const toml::node& n = required(key);
+  if (n.is_string()) {
+    const std::string value(*n.value<std::string>());
+    for (auto a : allowed)
+      if (value == a) return value;
+  }
+  fail_at(n, key, "one of " + options);
+}
+
+std::vector<double> TableReader::numbers(std::string_view key, std::size_t count) {
+  const toml::node& n = required(key);
+  const toml::array* array = n.as_array();
+  const std::string expected = "an array of " + std::to_string(count) + " numbers";
+  if (!array || array->size() != count) fail_at(n, key, expected);
+  std::vector<double> values;
+  for (const toml::node& item : *array) {
+    if (!item.is_number() || !std::isfinite(*item.value<double>())) fail_at(n, key, expected);
+    values.push_back(*item.value<double>());
+  }
+  return values;
+}
+
+std::vector<std::string> TableReader::strings(std::string_view key) {
+  const toml::node& n = required(key);
+  const toml::array* array = n.as_array();
+  if (!array) fail_at(n, key, "an array of strings");
+  std::vector<std::string> values;
+  for (const toml::node& item : *array) {
+    if (!item.is_string()) fail_at(n, key, "an array of strings");
+    values.emplace_back(*item.value<std::string>());
+  }
+  return values;
+}
+
+TableReader TableReader::table(std::string_view key) {
+  const toml::node& n = required(key);
+  if (!n.is_table()) fail_at(n, key, "a table");
+  return TableReader(*n.as_table(), dotted(key), file_);
+}
+
+std::vector<TableReader> TableReader::tables(std::string_view key) {
+  std::vector<TableReader> result;
+  const toml::node* n = node(key);
+  if (!n) return result;
+  const toml::array* array = n->as_array();
+  if (!array || !array->is_array_of_tables()) fail_at(*n, key, "an array of tables ([[" + dotted(key) + "]])");
+  for (std::size_t i = 0; i < array->size(); ++i) {
+    result.emplace_back(*array->get(i)->as_table(), dotted(key) + "[" + std::to_string(i) + "]", file_);
+  }
+  return result;
+}
+
+void TableReader::reject_unknown_keys() const {
+  for (auto&& [key, value] : *table_) {
+    if (!used_.count(key.str())) {
+      throw CaseError(source_of(value, file_) + ": " + dotted(key.str()) + ": unknown key");
+    }
+  }
+}
+
+}  // namespace flowmpm

@@ -1,0 +1,59 @@
+// Isotropic linear elasticity, small strain (seed 000, DESIGN.md):
+//   d sigma = lambda tr(d eps) I + 2 mu d eps,
+//   lambda = E nu / ((1 + nu)(1 - 2 nu)), mu = E / (2 (1 + nu)).
+// Rate form, so that it composes with return mapping later.
+#pragma once
+#include <cmath>
+
+#include "engine/types.hpp"
+#include "materials/stress_state.hpp"
+
+namespace flowmpm {
+
+class TableReader;
+
+struct LinearElastic {
+  static constexpr const char* type_name = "linear_elastic";
+
+  struct Parameters {
+    double density = 0.0;          // kg/m^3
+    double youngs_modulus = 0.0;   // Pa
+    double poisson_ratio = 0.0;    // -
+  };
+  struct State {};  // no internal variables
+
+  Parameters parameters;
+  double lambda = 0.0, mu = 0.0;
+
+  explicit LinearElastic(const Parameters& p)
+      : parameters(p),
+        lambda(p.youngs_modulus * p.poisson_ratio /
+               ((1.0 + p.poisson_ratio) * (1.0 - 2.0 * p.poisson_ratio))),
+        mu(p.youngs_modulus / (2.0 * (1.0 + p.poisson_ratio))) {}
+
+  // Reads and validates [materials.NAME] (type = "linear_elastic").
+  static LinearElastic read(TableReader& table);
+
+  double density() const { return parameters.density; }
+
+  // The fastest wave the model carries (P wave, constrained modulus), m/s.
+  double wave_speed() const { return std::sqrt((lambda + 2.0 * mu) / parameters.density); }
+
+  // Stress update for the strain increment `deps`. For reduced stress
+  // states the out-of-plane components of `deps` are set here (uniaxial
+  // stress: d eps_yy = d eps_zz = -nu d eps_xx).
+  template <StressState S>
+  void update(State&, Voigt& sigma, Voigt& deps) const {
+    if constexpr (S == StressState::uniaxial_stress) {
+      deps[1] = deps[2] = -parameters.poisson_ratio * deps[0];
+      sigma[0] += parameters.youngs_modulus * deps[0];
+      return;
+    }
+    // plane strain: deps_zz = 0 as given, so sigma_zz = lambda (deps_xx + deps_yy)
+    const double trace = deps[0] + deps[1] + deps[2];
+    for (int i = 0; i < 3; ++i) sigma[i] += lambda * trace + 2.0 * mu * deps[i];
+    for (int i = 3; i < 6; ++i) sigma[i] += 2.0 * mu * deps[i];
+  }
+};
+
+}  // namespace flowmpm

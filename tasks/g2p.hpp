@@ -1,0 +1,122 @@
+// Grid-to-particle stages (DESIGN.md).
+// g2p_motion: v_p <- a (v_p + sum_I N_Ip dv_I) + (1 - a) sum_I N_Ip v_I
+//             (a = 1 FLIP, a = 0 PIC), x_p <- x_p + dt sum_I N_Ip v_I,
+//             with v_I the velocity after grid_integrate.
+// g2p_stress: L_p = sum_I v_I (x) dN_Ip, d eps = sym(L_p) dt, the material
+//             update sigma(d eps), eps += d eps, V_p *= 1 + tr(d eps).
+// Stages after g2p_motion in the same step (USL stress, MUSL remap)
+// evaluate N and dN at the updated positions.
+#pragma once
+#include <sstream>
+
+#include "engine/particle_sort.hpp"
+#include "engine/stencil.hpp"
+#include "tasks/parallel_blocks.hpp"
+
+namespace flowmpm {
+
+namespace detail {
+
+// Cells a particle in cell c lies outside block `block` (0 inside).
+template <int D, class Shape>
+int drift_from_block(const Index<D>& c, const Index<D>& block) {
+  constexpr int B = BlockLayout<D, Shape>::block_cells;
+  int drift = 0;
+  for (int d = 0; d < D; ++d) {
+    drift = std::max(drift, block[d] * B - c[d]);
+    drift = std::max(drift, c[d] - (block[d] * B + B - 1));
+  }
+  return drift;
+}
+
+template <int D>
+std::string describe_particle(const Vec<D>& x, const Vec<D>& moved_to) {
+  std::ostringstream s;
+  s.precision(6);
+  s << "a particle at (";
+  for (int d = 0; d < D; ++d) s << (d ? ", " : "") << x[d];
+  s << ") m would move to (";
+  for (int d = 0; d < D; ++d) s << (d ? ", " : "") << moved_to[d];
+  s << ") m";
+  return s.str();
+}
+
+}  // namespace detail
+
+template <int D, class Shape>
+void g2p_motion(Model<D, Shape>& model) {
+  using Layout = BlockLayout<D, Shape>;
+  const auto& grid = model.grid;
+  const double a = model.flip_fraction, dt = model.dt;
+  gather_by_block(model, [&](ParticleBatch<D>& b, std::uint32_t first, std::uint32_t last,
+                             std::uint32_t block) {
+    const Index<D> bc = model.blocks.block_coords(block);
+    for (std::uint32_t p = first; p < last; ++p) {
+      const Stencil<D, Shape> s(grid, b.x[p]);
+      Vec<D> v_grid = Vec<D>::Zero(), dv = Vec<D>::Zero();
+      for (int k = 0; k < s.size; ++k) {
+        v_grid += s.N[k] * grid.velocity[s.node[k]];
+        dv += s.N[k] * grid.velocity_change[s.node[k]];
+      }
+      const Vec<D> x_new = b.x[p] + dt * v_grid;
+      // A particle must stay where its stencil has nodes and may cross at
+      // most one cell per step; otherwise it is not moved and the step fails.
+      const Index<D> c_old = cell_of<D, Shape>(grid, b.x[p]);
+      const Index<D> c_new = cell_of<D, Shape>(grid, x_new);
+      bool inside = true, one_cell = true;
+      for (int d = 0; d < D; ++d) {
+        inside = inside && c_new[d] >= Shape::reach_below && c_new[d] + Shape::reach_above <= grid.cells[d];
+        one_cell = one_cell && std::abs(c_new[d] - c_old[d]) <= 1;
+      }
+      if (!inside || !one_cell || !x_new.allFinite()) {
+        model.flags.fail(detail::describe_particle<D>(b.x[p], x_new) +
+                         (!inside ? ", outside the grid" : ", more than one cell in one step"));
+        continue;
+      }
+      b.v[p] = a * (b.v[p] + dv) + (1.0 - a) * v_grid;
+      b.x[p] = x_new;
+      if (detail::drift_from_block<D, Shape>(c_new, bc) >= Layout::drift_limit) {
+        model.flags.resort_needed.store(true, std::memory_order_relaxed);
+      }
+    }
+  });
+}
+
+template <int D, class Shape, class MaterialModel>
+void update_stress(Model<D, Shape>& model, ParticleBatch<D>& b, const MaterialModel& material,
+                   StateArray<MaterialModel>& states) {
+  constexpr StressState S = Model<D, Shape>::stress_state;
+  const auto& grid = model.grid;
+  const double dt = model.dt;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, b.size(), 1024),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+    typename MaterialModel::State no_state{};
+    for (std::size_t p = r.begin(); p != r.end(); ++p) {
+      const Stencil<D, Shape> s(grid, b.x[p]);
+      Eigen::Matrix<double, D, D> L = Eigen::Matrix<double, D, D>::Zero();
+      for (int k = 0; k < s.size; ++k) L += grid.velocity[s.node[k]] * s.dN[k].transpose();
+      Voigt deps{};
+      for (int i = 0; i < D; ++i)
+        for (int j = i; j < D; ++j) deps[voigt_slot(i, j)] = 0.5 * (L(i, j) + L(j, i)) * dt;
+      auto& state = states.empty() ? no_state : states[p];
+      material.template update<S>(state, b.stress[p], deps);
+      for (int i = 0; i < 6; ++i) b.strain[p][i] += deps[i];
+      b.volume[p] *= 1.0 + deps[0] + deps[1] + deps[2];
+    }
+  });
+}
+
+template <int D, class Shape>
+void g2p_stress(Model<D, Shape>& model) {
+  for (auto& batch : model.batches) {
+    // One dispatch on the material per batch, none per particle.
+    std::visit(
+        [&](const auto& material) {
+          using M = std::decay_t<decltype(material)>;
+          update_stress(model, batch, material, std::get<StateArray<M>>(batch.states));
+        },
+        model.materials[batch.material]);
+  }
+}
+
+}  // namespace flowmpm
