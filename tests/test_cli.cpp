@@ -1,0 +1,403 @@
+// The flowmpm command-line program, run as a separate process on case files
+// written into a fresh temporary directory: bad case files and bad command
+// lines give exit status 1 with one clear message and write nothing, a valid
+// run writes its results (and can run again over them).
+#include <doctest/doctest.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstddef>
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// A fresh directory, removed with everything in it at the end of the test.
+struct TempDir {
+  fs::path path;
+  TempDir() {
+    static std::atomic<int> counter{0};
+    path = fs::temp_directory_path() /
+           ("flowmpm_test_cli_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
+    fs::remove_all(path);
+    fs::create_directories(path);
+  }
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+  ~TempDir() {
+    std::error_code ignored;
+    fs::remove_all(path, ignored);
+  }
+};
+
+struct Result {
+  int status = -1;     // exit status; 128 + signal number if killed by a signal
+  std::string output;  // stdout and stderr together
+};
+
+// Runs the flowmpm binary with `args` in the working directory `cwd`.
+Result run_flowmpm(const std::vector<std::string>& args, const fs::path& cwd) {
+  // Everything the child needs is prepared before fork().
+  std::vector<std::string> storage;
+  storage.emplace_back(FLOWMPM_EXECUTABLE);
+  storage.insert(storage.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (std::string& s : storage) argv.push_back(s.data());
+  argv.push_back(nullptr);
+  const std::string dir = cwd.string();
+
+  Result result;
+  int fds[2];
+  if (::pipe(fds) != 0) {
+    FAIL("pipe() failed");
+    return result;
+  }
+  const pid_t pid = ::fork();
+  if (pid < 0) {
+    ::close(fds[0]);
+    ::close(fds[1]);
+    FAIL("fork() failed");
+    return result;
+  }
+  if (pid == 0) {
+    ::dup2(fds[1], STDOUT_FILENO);
+    ::dup2(fds[1], STDERR_FILENO);
+    ::close(fds[0]);
+    ::close(fds[1]);
+    if (::chdir(dir.c_str()) != 0) ::_exit(126);
+    ::execv(argv[0], argv.data());
+    ::_exit(127);
+  }
+  ::close(fds[1]);
+  char buffer[4096];
+  for (;;) {
+    const ssize_t n = ::read(fds[0], buffer, sizeof buffer);
+    if (n > 0) {
+      result.output.append(buffer, static_cast<std::size_t>(n));
+    } else if (n == 0 || errno != EINTR) {
+      break;
+    }
+  }
+  ::close(fds[0]);
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (WIFEXITED(status)) {
+    result.status = WEXITSTATUS(status);
+  } else if (WIFSIGNALED(status)) {
+    result.status = 128 + WTERMSIG(status);
+  }
+  return result;
+}
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+void write_text(const fs::path& path, const std::string& text) {
+  std::ofstream out(path);
+  out << text;
+  REQUIRE(out.good());
+}
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+std::vector<std::string> non_empty_lines(const std::string& text) {
+  std::vector<std::string> lines;
+  for (const std::string& line : lines_of(text)) {
+    if (line.find_first_not_of(" \t\r") != std::string::npos) lines.push_back(line);
+  }
+  return lines;
+}
+
+// The text of a case file, line by line, for editing.
+struct CaseText {
+  std::vector<std::string> lines;
+
+  static CaseText valid() {
+    const fs::path source = fs::path(FLOWMPM_SOURCE_DIR) / "configs/uniaxial_stress/case1_usl.toml";
+    const std::string text = read_text(source);
+    REQUIRE_MESSAGE(!text.empty(), "cannot read " << source.string());
+    return CaseText{lines_of(text)};
+  }
+
+  // 1-based number of the first line starting with `prefix`.
+  int line_of(const std::string& prefix) const {
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+      if (lines[i].rfind(prefix, 0) == 0) return static_cast<int>(i) + 1;
+    }
+    FAIL("no line starts with '" << prefix << "'");
+    return 0;
+  }
+
+  // Replaces the first line starting with `prefix`; returns its number.
+  int replace(const std::string& prefix, const std::string& line) {
+    const int n = line_of(prefix);
+    lines[static_cast<std::size_t>(n - 1)] = line;
+    return n;
+  }
+
+  // Removes the first line starting with `prefix`.
+  void remove(const std::string& prefix) {
+    const int n = line_of(prefix);
+    lines.erase(lines.begin() + (n - 1));
+  }
+
+  std::string text() const {
+    std::string t;
+    for (const std::string& line : lines) t += line + "\n";
+    return t;
+  }
+};
+
+std::vector<std::string> files_in(const fs::path& dir) {
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(dir)) names.push_back(entry.path().filename().string());
+  return names;
+}
+
+// Writes `text` as a case file and runs both `flowmpm check` and
+// `flowmpm run --output ...` on it with `extra` arguments. Each must exit 1
+// with one message line naming the file (and `line` if > 0; neither if
+// `line` < 0) and containing every one of `fragments`, and `run` must write
+// nothing.
+void expect_rejected(const TempDir& dir, const std::string& text, int line,
+                     std::initializer_list<std::string> fragments,
+                     const std::vector<std::string>& extra = {}) {
+  const fs::path case_file = dir.path / "case.toml";
+  write_text(case_file, text);
+  const fs::path out = dir.path / "out";
+  std::string where;
+  if (line >= 0) where = case_file.string();
+  if (line > 0) where.append(":").append(std::to_string(line)).append(":");
+
+  for (const std::string command : {"check", "run"}) {
+    std::vector<std::string> args{command, case_file.string()};
+    if (command == "run") args.insert(args.end(), {"--threads", "2", "--output", out.string()});
+    args.insert(args.end(), extra.begin(), extra.end());
+    const Result r = run_flowmpm(args, dir.path);
+    INFO("flowmpm " << command << " ... printed:\n" << r.output);
+    CHECK(r.status == 1);
+    CHECK(non_empty_lines(r.output).size() == 1);
+    CHECK_MESSAGE(contains(r.output, where), "expected the location '" << where << "'");
+    for (const std::string& fragment : fragments) {
+      CHECK_MESSAGE(contains(r.output, fragment), "expected '" << fragment << "'");
+    }
+    if (command == "run") {
+      CHECK_MESSAGE(!fs::exists(out), "run created " << out.string() << " for a bad case");
+      // Nothing else was written either (the case's own output.directory is
+      // relative to the working directory, the temporary directory).
+      const std::vector<std::string> names = files_in(dir.path);
+      CHECK(names == std::vector<std::string>{"case.toml"});
+    }
+  }
+}
+
+}  // namespace
+
+TEST_CASE("a bad case file is rejected with one clear message and nothing is written") {
+  TempDir dir;
+  CaseText c = CaseText::valid();
+
+  SUBCASE("the valid case itself passes check") {
+    const fs::path case_file = dir.path / "case.toml";
+    write_text(case_file, c.text());
+    const Result r = run_flowmpm({"check", case_file.string()}, dir.path);
+    INFO(r.output);
+    CHECK(r.status == 0);
+    CHECK(contains(r.output, case_file.string() + ": ok"));
+  }
+  SUBCASE("malformed TOML: an unclosed table header bracket") {
+    const int line = c.replace("[analysis]", "[analysis");
+    expect_rejected(dir, c.text(), line, {"TOML", "expected"});
+  }
+  SUBCASE("malformed TOML: a missing comma in an array") {
+    const int line = c.replace("origin = ", "origin = [0.0, 0.0 0.0]");
+    expect_rejected(dir, c.text(), line, {"TOML", "expected"});
+  }
+  SUBCASE("malformed TOML: an unclosed array bracket") {
+    // The error is in the line of `origin`; the parser notices it only on
+    // the next line, but the message must lead the user to this one.
+    const int line = c.replace("origin = ", "origin = [0.0, 0.0, 0.0");
+    expect_rejected(dir, c.text(), line, {"TOML", "expected"});
+  }
+  SUBCASE("an unknown key") {
+    const int line = c.replace("scheme = ", "shceme = \"usl\"");
+    expect_rejected(dir, c.text(), line, {"analysis.shceme", "unknown key"});
+  }
+  SUBCASE("a value of the wrong type") {
+    const int line = c.replace("dt = ", "dt = \"fast\"");
+    expect_rejected(dir, c.text(), line, {"analysis.dt", "a number", "fast"});
+  }
+  SUBCASE("a missing required key") {
+    c.remove("youngs_modulus = ");
+    // There is no line of the key itself: the message points at its table.
+    const int line = c.line_of("[materials.elastic]");
+    expect_rejected(dir, c.text(), line, {"materials.elastic.youngs_modulus", "missing"});
+  }
+  SUBCASE("a negative density") {
+    const int line = c.replace("density = ", "density = -1.0");
+    expect_rejected(dir, c.text(), line, {"materials.elastic.density", "positive"});
+  }
+  SUBCASE("a Poisson ratio of 0.5") {
+    const int line = c.replace("poisson_ratio = ", "poisson_ratio = 0.5");
+    expect_rejected(dir, c.text(), line, {"materials.elastic.poisson_ratio", "0.5", "expected"});
+  }
+  SUBCASE("a body box outside the grid") {
+    const int line = c.replace("max = ", "max = [2.0, 1.0, 1.0]");
+    expect_rejected(dir, c.text(), line, {"bodies[0].max", "inside the grid"});
+  }
+  SUBCASE("a time step above the stable limit") {
+    // density 1, E 1000, nu 0.2, h 1 m: the stable limit is h/c = 0.03 s.
+    const int line = c.replace("dt = ", "dt = 0.05");
+    expect_rejected(dir, c.text(), line, {"analysis.dt", "stable", "0.03"});
+  }
+  SUBCASE("an unknown scheme") {
+    const int line = c.replace("scheme = ", "scheme = \"usx\"");
+    expect_rejected(dir, c.text(), line, {"analysis.scheme", "\"usf\"", "\"usl\"", "\"musl\"", "usx"});
+  }
+  SUBCASE("a body whose material does not exist") {
+    const int line = c.replace("material = ", "material = \"steel\"");
+    expect_rejected(dir, c.text(), line, {"bodies[0].material", "steel", "\"elastic\""});
+  }
+  SUBCASE("a node set plane off the grid node planes") {
+    const int line = c.replace("at = ", "at = 0.3");
+    expect_rejected(dir, c.text(), line, {"node_sets[0].at", "grid nodes", "0.3"});
+  }
+}
+
+TEST_CASE("--set overrides are checked like the case file") {
+  TempDir dir;
+  const fs::path case_file = dir.path / "case.toml";
+  write_text(case_file, CaseText::valid().text());
+
+  SUBCASE("a bad value names --set and the key") {
+    expect_rejected(dir, CaseText::valid().text(), -1, {"--set", "analysis.dt", "positive"},
+                    {"--set", "analysis.dt=-1"});
+  }
+  SUBCASE("a time step above the stable limit names --set and the key") {
+    expect_rejected(dir, CaseText::valid().text(), -1, {"--set", "analysis.dt", "stable"},
+                    {"--set", "analysis.dt=0.05"});
+  }
+  SUBCASE("an override without '=' names --set") {
+    expect_rejected(dir, CaseText::valid().text(), -1, {"--set", "analysis.dt", "KEY=VALUE"},
+                    {"--set", "analysis.dt"});
+  }
+  SUBCASE("a bare string value is accepted") {
+    const Result r = run_flowmpm({"check", case_file.string(), "--set", "analysis.scheme=musl"}, dir.path);
+    INFO(r.output);
+    CHECK(r.status == 0);
+    CHECK(contains(r.output, "MUSL"));
+    CHECK(contains(r.output, case_file.string() + ": ok"));
+  }
+}
+
+TEST_CASE("command-line misuse") {
+  TempDir dir;
+  const fs::path case_file = dir.path / "case.toml";
+  write_text(case_file, CaseText::valid().text());
+
+  auto misuse = [&](const std::vector<std::string>& args, const std::string& fragment) {
+    const Result r = run_flowmpm(args, dir.path);
+    INFO("printed:\n" << r.output);
+    CHECK(r.status == 1);
+    CHECK(!non_empty_lines(r.output).empty());
+    CHECK_MESSAGE(contains(r.output, fragment), "expected '" << fragment << "'");
+    CHECK(files_in(dir.path) == std::vector<std::string>{"case.toml"});
+  };
+
+  SUBCASE("no arguments") { misuse({}, "no command"); }
+  SUBCASE("an unknown command") { misuse({"frobnicate", case_file.string()}, "frobnicate"); }
+  SUBCASE("an unknown option") { misuse({"run", case_file.string(), "--bogus"}, "--bogus"); }
+  SUBCASE("--threads 0") { misuse({"run", case_file.string(), "--threads", "0"}, "--threads"); }
+  SUBCASE("--help") {
+    const Result r = run_flowmpm({"--help"}, dir.path);
+    INFO(r.output);
+    CHECK(r.status == 0);
+    CHECK(contains(r.output, "Usage"));
+  }
+  SUBCASE("--version") {
+    const Result r = run_flowmpm({"--version"}, dir.path);
+    INFO(r.output);
+    CHECK(r.status == 0);
+    CHECK(r.output.rfind("flowmpm ", 0) == 0);
+  }
+}
+
+TEST_CASE("a missing case file") {
+  TempDir dir;
+  const fs::path missing = dir.path / "no_such_case.toml";
+  const fs::path out = dir.path / "out";
+  for (const std::string command : {"check", "run"}) {
+    std::vector<std::string> args{command, missing.string()};
+    if (command == "run") args.insert(args.end(), {"--output", out.string()});
+    const Result r = run_flowmpm(args, dir.path);
+    INFO("flowmpm " << command << " printed:\n" << r.output);
+    CHECK(r.status == 1);
+    CHECK(non_empty_lines(r.output).size() == 1);
+    CHECK(contains(r.output, missing.string()));
+    CHECK(!fs::exists(out));
+  }
+}
+
+TEST_CASE("a valid run writes its results, and runs again over them") {
+  TempDir dir;
+  const fs::path case_file = dir.path / "case.toml";
+  write_text(case_file, CaseText::valid().text());
+  const fs::path out = dir.path / "out";
+
+  auto run_and_check = [&](const std::vector<std::string>& extra, const std::string& scheme) {
+    std::vector<std::string> args{"run", case_file.string(), "--threads", "2", "--output", out.string(), "--quiet"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const Result r = run_flowmpm(args, dir.path);
+    INFO("printed:\n" << r.output);
+    REQUIRE(r.status == 0);
+
+    for (const char* name : {"results.h5", "results.xdmf", "timeseries.csv", "summary.json"}) {
+      CHECK_MESSAGE(fs::is_regular_file(out / name), "missing " << name);
+      if (fs::is_regular_file(out / name)) CHECK(fs::file_size(out / name) > 0);
+    }
+    for (const std::string& name : files_in(out)) {
+      CHECK_MESSAGE(!contains(name, ".tmp"), "leftover temporary file " << name);
+    }
+
+    const std::string summary = read_text(out / "summary.json");
+    INFO("summary.json:\n" << summary);
+    CHECK(contains(summary, "\"status\": \"completed\""));
+    CHECK(contains(summary, "\"steps\": 10"));
+    CHECK(contains(summary, "\"scheme\": \"" + scheme + "\""));
+
+    const std::vector<std::string> rows = non_empty_lines(read_text(out / "timeseries.csv"));
+    REQUIRE(!rows.empty());
+    CHECK(rows[0].rfind("step,time,kinetic_energy,strain_energy", 0) == 0);
+    CHECK(rows.size() >= 3);  // the header and at least 2 data rows
+
+    CHECK(contains(read_text(out / "results.xdmf"), "results.h5:/steps/"));
+  };
+
+  run_and_check({}, "USL");
+  // Again into the same directory, over the earlier results: the new results
+  // replace them.
+  run_and_check({"--set", "analysis.scheme=musl"}, "MUSL");
+}
