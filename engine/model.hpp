@@ -54,6 +54,7 @@ struct Model {
 
   double t = 0.0, dt = 0.0;  // time at the start of the step, time step (s)
   std::int64_t step = 0;
+  std::int64_t sorts = 0;  // particle sorts so far (the first at set-up)
   StepFlags flags;
 
   std::size_t particle_count() const {

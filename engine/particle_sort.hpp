@@ -100,6 +100,7 @@ void sort_particles(Model<D, Shape>& model) {
         std::min(grid.cells[d], (hi[d] + 1) * B - 1 + Layout::drift_limit + Shape::reach_above);
   }
   model.flags.resort_needed = false;
+  ++model.sorts;
 }
 
 }  // namespace flowmpm

@@ -1,7 +1,10 @@
 #include "io/case_file.hpp"
 
 #include <cmath>
+#include <fstream>
 #include <limits>
+#include <map>
+#include <memory>
 #include <sstream>
 
 #include "io/case_reader.hpp"
@@ -30,7 +33,8 @@ std::string fmt(double v) {
 
 // Applies one --set KEY=VALUE to the document. VALUE is TOML; a value that
 // does not parse as TOML is taken as a bare string (--set analysis.scheme=usf).
-void apply_override(toml::table& root, const std::string& assignment) {
+// Returns the key as messages name it ("bodies[0].velocity").
+std::string apply_override(toml::table& root, const std::string& assignment) {
   const auto eq = assignment.find('=');
   if (eq == std::string::npos || eq == 0) {
     throw CaseError("--set " + assignment + ": expected KEY=VALUE, e.g. --set analysis.dt=0.001");
@@ -70,6 +74,12 @@ void apply_override(toml::table& root, const std::string& assignment) {
   toml::table* target = node->as_table();
   if (!target) throw CaseError(source + ": the key's parent is not a table");
   target->insert_or_assign(parts.back(), *parsed.get("value"));
+  std::string dotted;
+  for (const std::string& part : parts) {
+    const bool index = !part.empty() && part.find_first_not_of("0123456789") == std::string::npos;
+    dotted += index ? "[" + part + "]" : (dotted.empty() ? "" : ".") + part;
+  }
+  return dotted;
 }
 
 Vec3 vector_of(TableReader& t, std::string_view key, int dim, Vec3 fallback = {}) {
@@ -293,15 +303,27 @@ Case read_case(const std::filesystem::path& file, const std::vector<std::string>
   try {
     root = toml::parse_file(file.string());
   } catch (const toml::parse_error& e) {
-    const auto& where = e.source();
-    throw CaseError(file.string() + ":" + std::to_string(where.begin.line) + ": not valid TOML: " +
-                    std::string(e.description()));
+    // The parser reports where it noticed the error, which can be the line
+    // after the mistake (an unclosed array): quote both lines.
+    const auto line = static_cast<std::size_t>(e.source().begin.line);
+    std::ifstream in(file);
+    std::vector<std::string> lines;
+    for (std::string text; std::getline(in, text);) lines.push_back(text);
+    std::string context;
+    if (line >= 1 && line <= lines.size()) context = " (line " + std::to_string(line) + ": '" + lines[line - 1] + "'";
+    if (line >= 2 && line <= lines.size()) context += ", after line " + std::to_string(line - 1) + ": '" + lines[line - 2] + "'";
+    if (!context.empty()) context += ")";
+    throw CaseError(file.string() + ":" + std::to_string(line) + ": not valid TOML: " +
+                    std::string(e.description()) + context);
   }
-  for (const std::string& assignment : overrides) apply_override(root, assignment);
+  auto sources = std::make_shared<std::map<std::string, std::string>>();
+  for (const std::string& assignment : overrides) {
+    (*sources)[apply_override(root, assignment)] = "--set " + assignment;
+  }
 
   Case c;
   c.file = file;
-  TableReader t(root, "", file.string());
+  TableReader t(root, "", file.string(), sources);
   c.name = t.string_or("name", file.stem().string());
   read_analysis(t.table("analysis"), c);
   read_grid(t.table("grid"), c);

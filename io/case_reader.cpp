@@ -31,8 +31,9 @@ std::string source_of(const toml::node& node, const std::string& fallback_file) 
   return file + ":" + std::to_string(src.begin.line);
 }
 
-TableReader::TableReader(const toml::table& table, std::string path, std::string file)
-    : table_(&table), path_(std::move(path)), file_(std::move(file)) {}
+TableReader::TableReader(const toml::table& table, std::string path, std::string file,
+                         std::shared_ptr<const std::map<std::string, std::string>> overrides)
+    : table_(&table), path_(std::move(path)), file_(std::move(file)), overrides_(std::move(overrides)) {}
 
 std::string TableReader::dotted(std::string_view key) const {
   return path_.empty() ? std::string(key) : path_ + "." + std::string(key);
@@ -40,10 +41,21 @@ std::string TableReader::dotted(std::string_view key) const {
 
 bool TableReader::has(std::string_view key) const { return table_->contains(key); }
 
+std::string TableReader::location(const toml::node& node, std::string_view key) const {
+  if (overrides_) {
+    // A key set by --set, or inside a table set by --set.
+    const std::string full = dotted(key);
+    for (const auto& [set_key, assignment] : *overrides_) {
+      if (full == set_key || full.starts_with(set_key + ".") || full.starts_with(set_key + "[")) return assignment;
+    }
+  }
+  return source_of(node, file_);
+}
+
 void TableReader::fail_at(const toml::node& node, std::string_view key,
                           std::string_view expected) const {
-  throw CaseError(source_of(node, file_) + ": " + dotted(key) + ": expected " +
-                  std::string(expected) + ", got " + describe(node));
+  throw CaseError(location(node, key) + ": " + dotted(key) + ": expected " + std::string(expected) + ", got " +
+                  describe(node));
 }
 
 void TableReader::fail(std::string_view key, std::string_view expected) const {
@@ -156,7 +168,7 @@ std::vector<std::string> TableReader::strings(std::string_view key) {
 TableReader TableReader::table(std::string_view key) {
   const toml::node& n = required(key);
   if (!n.is_table()) fail_at(n, key, "a table");
-  return TableReader(*n.as_table(), dotted(key), file_);
+  return TableReader(*n.as_table(), dotted(key), file_, overrides_);
 }
 
 std::vector<TableReader> TableReader::tables(std::string_view key) {
@@ -166,7 +178,7 @@ std::vector<TableReader> TableReader::tables(std::string_view key) {
   const toml::array* array = n->as_array();
   if (!array || !array->is_array_of_tables()) fail_at(*n, key, "an array of tables ([[" + dotted(key) + "]])");
   for (std::size_t i = 0; i < array->size(); ++i) {
-    result.emplace_back(*array->get(i)->as_table(), dotted(key) + "[" + std::to_string(i) + "]", file_);
+    result.emplace_back(*array->get(i)->as_table(), dotted(key) + "[" + std::to_string(i) + "]", file_, overrides_);
   }
   return result;
 }
@@ -174,7 +186,7 @@ std::vector<TableReader> TableReader::tables(std::string_view key) {
 void TableReader::reject_unknown_keys() const {
   for (auto&& [key, value] : *table_) {
     if (!used_.count(key.str())) {
-      throw CaseError(source_of(value, file_) + ": " + dotted(key.str()) + ": unknown key");
+      throw CaseError(location(value, key.str()) + ": " + dotted(key.str()) + ": unknown key");
     }
   }
 }

@@ -6,6 +6,8 @@
 #pragma once
 #include <cstdint>
 #include <initializer_list>
+#include <map>
+#include <memory>
 #include <optional>
 #include <set>
 #include <stdexcept>
@@ -30,7 +32,10 @@ class TableReader {
  public:
   // `path` is the dotted name of the table ("analysis", "bodies[1]"), empty
   // for the document root.
-  TableReader(const toml::table& table, std::string path, std::string file);
+  // `overrides` maps dotted keys set from the command line to the --set
+  // text that set them, so that messages point there and not at the file.
+  TableReader(const toml::table& table, std::string path, std::string file,
+              std::shared_ptr<const std::map<std::string, std::string>> overrides = {});
 
   bool has(std::string_view key) const;
 
@@ -71,11 +76,14 @@ class TableReader {
 
  private:
   const toml::node& required(std::string_view key);
+  // "file:line" of a node, or the --set that gave it.
+  std::string location(const toml::node& node, std::string_view key) const;
   [[noreturn]] void fail_at(const toml::node& node, std::string_view key,
                             std::string_view expected) const;
 
   const toml::table* table_;
   std::string path_, file_;
+  std::shared_ptr<const std::map<std::string, std::string>> overrides_;
   std::set<std::string, std::less<>> used_;
 };
 

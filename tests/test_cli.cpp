@@ -238,9 +238,9 @@ TEST_CASE("a bad case file is rejected with one clear message and nothing is wri
   }
   SUBCASE("malformed TOML: an unclosed array bracket") {
     // The error is in the line of `origin`; the parser notices it only on
-    // the next line, but the message must lead the user to this one.
+    // the next line, so the message quotes that line and the one before it.
     const int line = c.replace("origin = ", "origin = [0.0, 0.0, 0.0");
-    expect_rejected(dir, c.text(), line, {"TOML", "expected"});
+    expect_rejected(dir, c.text(), line + 1, {"TOML", "expected", "origin = [0.0, 0.0, 0.0"});
   }
   SUBCASE("an unknown key") {
     const int line = c.replace("scheme = ", "shceme = \"usl\"");

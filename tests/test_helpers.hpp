@@ -1,0 +1,26 @@
+// Shared by the tests: reading shipped cases and writing scratch ones.
+#pragma once
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "io/case_file.hpp"
+
+namespace flowmpm::testing {
+
+inline std::filesystem::path config(const std::string& relative) {
+  return std::filesystem::path(FLOWMPM_SOURCE_DIR) / "configs" / relative;
+}
+
+// Writes `text` to a case file in a scratch directory and reads it.
+inline Case case_from_text(const std::string& name, const std::string& text,
+                           const std::vector<std::string>& overrides = {}) {
+  const auto dir = std::filesystem::temp_directory_path() / "flowmpm-tests";
+  std::filesystem::create_directories(dir);
+  const auto file = dir / (name + ".toml");
+  std::ofstream(file) << text;
+  return read_case(file, overrides);
+}
+
+}  // namespace flowmpm::testing

@@ -1,0 +1,80 @@
+// Shape-function invariants at many particle positions in 1D, 2D and 3D,
+// including the cells next to the grid boundary:
+//   partition of unity        sum_I N_I = 1
+//   zero gradient sum         sum_I dN_I = 0
+//   linear reproduction       sum_I N_I x_I = x,  sum_I x_I (x) dN_I = I
+// Tolerance 1e-12: the sums are of O(1) terms, exact up to round-off.
+#include <doctest/doctest.h>
+
+#include <random>
+
+#include "engine/shape_linear.hpp"
+#include "engine/stencil.hpp"
+
+using namespace flowmpm;
+
+template <int D, class Shape>
+void check_invariants() {
+  Vec<D> origin, h;
+  Index<D> cells;
+  for (int d = 0; d < D; ++d) {
+    origin[d] = -1.0 + 0.3 * d;
+    h[d] = 0.25 + 0.1 * d;  // anisotropic cells
+    cells[d] = 6;
+  }
+  const Grid<D> grid(origin, h, cells);
+  std::mt19937_64 rng(42);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int sample = 0; sample < 2000; ++sample) {
+    Vec<D> x;
+    for (int d = 0; d < D; ++d) {
+      // Every cell the shape function allows, first and last included.
+      const double lo = Shape::reach_below, hi = cells[d] - Shape::reach_above + 1;
+      x[d] = origin[d] + h[d] * (lo + (hi - lo) * unit(rng));
+    }
+    const Stencil<D, Shape> s(grid, x);
+    double sum_N = 0.0;
+    Vec<D> sum_dN = Vec<D>::Zero(), sum_Nx = Vec<D>::Zero();
+    Eigen::Matrix<double, D, D> sum_xdN = Eigen::Matrix<double, D, D>::Zero();
+    for (int a = 0; a < s.size; ++a) {
+      Index<D> ijk;
+      std::size_t rest = s.node[a];
+      for (int d = 0; d < D; ++d) {
+        ijk[d] = static_cast<int>(rest % grid.nodes[d]);
+        rest /= grid.nodes[d];
+      }
+      const Vec<D> xI = grid.node_position(ijk);
+      CHECK(s.N[a] >= -1e-15);
+      sum_N += s.N[a];
+      sum_dN += s.dN[a];
+      sum_Nx += s.N[a] * xI;
+      sum_xdN += xI * s.dN[a].transpose();
+    }
+    CHECK(sum_N == doctest::Approx(1.0).epsilon(1e-12));
+    for (int d = 0; d < D; ++d) {
+      CHECK(std::abs(sum_dN[d]) < 1e-12 / h.minCoeff());
+      CHECK(sum_Nx[d] == doctest::Approx(x[d]).epsilon(1e-12));
+      for (int e = 0; e < D; ++e) CHECK(sum_xdN(d, e) == doctest::Approx(d == e ? 1.0 : 0.0).epsilon(1e-12));
+    }
+  }
+}
+
+TEST_CASE("linear shape functions: partition of unity, zero gradient sum, linear reproduction") {
+  check_invariants<1, LinearShape>();
+  check_invariants<2, LinearShape>();
+  check_invariants<3, LinearShape>();
+}
+
+TEST_CASE("linear shape function values by hand") {
+  // Particle at (0.25, 0.5) in a unit cell: weights (0.75, 0.25) x (0.5, 0.5).
+  const Grid<2> grid(Vec<2>::Zero(), Vec<2>::Ones(), {2, 2});
+  const Stencil<2, LinearShape> s(grid, Vec<2>(0.25, 0.5));
+  CHECK(s.node[0] == 0);
+  CHECK(s.node[1] == 1);
+  CHECK(s.node[2] == 3);
+  CHECK(s.node[3] == 4);
+  CHECK(s.N[0] == doctest::Approx(0.375));
+  CHECK(s.N[1] == doctest::Approx(0.125));
+  CHECK(s.dN[0][0] == doctest::Approx(-0.5));
+  CHECK(s.dN[0][1] == doctest::Approx(-0.75));
+}

@@ -1,0 +1,83 @@
+// The order in which the stages of one step run, recorded from the flow
+// graph, against the wirings of DESIGN.md:
+//   USF:  p2g_momentum -> grid_velocity -> g2p_stress -> p2g_force -> grid_integrate -> g2p_motion
+//   USL:  p2g_momentum + p2g_force -> grid_velocity -> grid_integrate -> g2p_motion -> g2p_stress
+//   MUSL: p2g_momentum + p2g_force -> grid_velocity -> grid_integrate -> g2p_motion -> remap
+//         -> grid_velocity -> g2p_stress
+// ("+": the two p2g stages may run in either order, or at once).
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <mutex>
+
+#include "engine/shape_linear.hpp"
+#include "engine/simulation.hpp"
+#include "test_helpers.hpp"
+
+using namespace flowmpm;
+using S = Stage;
+
+namespace {
+
+std::vector<Stage> recorded_order(const std::string& scheme, bool serial) {
+  const Case c = read_case(testing::config("uniaxial_stress/case1_usl.toml"), {"analysis.scheme=" + scheme});
+  std::mutex mutex;
+  std::vector<Stage> order;
+  Simulation<3, LinearShape> sim(c, [&](Stage s) {
+    std::lock_guard lock(mutex);
+    order.push_back(s);
+  });
+  serial ? sim.advance_serial() : sim.advance();
+  return order;
+}
+
+// Equal, except that the first `parallel_heads` stages may come in any order.
+void check_order(std::vector<Stage> got, std::vector<Stage> expected, int parallel_heads) {
+  REQUIRE(got.size() == expected.size());
+  std::sort(got.begin(), got.begin() + parallel_heads);
+  std::sort(expected.begin(), expected.begin() + parallel_heads);
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    INFO("position " << i << ": got " << stage_name(got[i]) << ", expected " << stage_name(expected[i]));
+    CHECK(got[i] == expected[i]);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("USF wiring") {
+  const std::vector<Stage> usf{S::p2g_momentum, S::grid_velocity,  S::g2p_stress,
+                               S::p2g_force,    S::grid_integrate, S::g2p_motion};
+  check_order(recorded_order("usf", false), usf, 1);
+  check_order(recorded_order("usf", true), usf, 1);
+  CHECK(wiring_of(Scheme::usf).describe() ==
+        "p2g_momentum -> grid_velocity -> g2p_stress -> p2g_force -> grid_integrate -> g2p_motion");
+}
+
+TEST_CASE("USL wiring") {
+  const std::vector<Stage> usl{S::p2g_momentum,   S::p2g_force,  S::grid_velocity,
+                               S::grid_integrate, S::g2p_motion, S::g2p_stress};
+  check_order(recorded_order("usl", false), usl, 2);
+  check_order(recorded_order("usl", true), usl, 2);
+  CHECK(wiring_of(Scheme::usl).describe() ==
+        "p2g_momentum + p2g_force -> grid_velocity -> grid_integrate -> g2p_motion -> g2p_stress");
+}
+
+TEST_CASE("MUSL wiring") {
+  const std::vector<Stage> musl{S::p2g_momentum, S::p2g_force, S::grid_velocity, S::grid_integrate,
+                                S::g2p_motion,   S::remap,     S::grid_velocity, S::g2p_stress};
+  check_order(recorded_order("musl", false), musl, 2);
+  check_order(recorded_order("musl", true), musl, 2);
+  CHECK(wiring_of(Scheme::musl).describe() ==
+        "p2g_momentum + p2g_force -> grid_velocity -> grid_integrate -> g2p_motion -> remap -> "
+        "grid_velocity -> g2p_stress");
+}
+
+TEST_CASE("the graph runs each stage node once per step, for many steps") {
+  const Case c = read_case(testing::config("uniaxial_stress/case2_musl.toml"));
+  std::atomic<int> calls{0};
+  Simulation<3, LinearShape> sim(c, [&](Stage) { ++calls; });
+  for (int i = 0; i < 50; ++i) sim.advance();
+  CHECK(calls == 50 * 8);
+  CHECK(sim.model().step == 50);
+  CHECK(sim.model().t == doctest::Approx(0.05).epsilon(1e-12));
+}
