@@ -1,0 +1,194 @@
+// Throughput of the explicit step: a 3D linear-elastic block resting on a
+// fixed base under gravity (USL, linear shape functions, FLIP), at several
+// sizes, with 1 and 2 threads. Reports, per size, the median over repeats of
+//   - particle-steps per second through the flow graph, 1 and 2 threads,
+//     and the 2-thread speedup;
+//   - the serial reference step (stages called in order, no graph) on one
+//     thread, and the graph's overhead relative to it;
+//   - set-up time (particles generated and sorted) per million particles;
+//   - peak resident memory per particle (whole process, and above the
+//     resident memory before the model was built);
+//   - the share of each stage in the step.
+// Output steps are not part of this program (see README, output cost).
+//
+//   build/bench/bench_throughput [--sizes 1e4,1e5,1e6] [--steps-per-size N]
+//                                [--repeats R] [--csv FILE]
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <tbb/global_control.h>
+
+#include "engine/shape_linear.hpp"
+#include "engine/simulation.hpp"
+
+using namespace flowmpm;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+// The block: k x k x k cells of 8 particles each (2 per axis), resting on
+// the plane of nodes one cell above the grid's bottom, which is held fixed.
+Case block_case(std::size_t target_particles) {
+  const int k = std::max(2, static_cast<int>(std::lround(std::cbrt(target_particles / 8.0))));
+  const double h = 1.0 / k;  // a 1 m cube
+  Case c;
+  c.name = "bench_block";
+  c.dimension = 3;
+  c.scheme = Scheme::usl;
+  c.grid.origin = {-h, -h, -h};
+  c.grid.cell_size = {h, h, h};
+  c.grid.cells = {k + 2, k + 3, k + 2};
+  c.gravity = {0.0, -9.81, 0.0};
+  c.materials.push_back({"elastic", LinearElastic(LinearElastic::Parameters{1000.0, 1e7, 0.3})});
+  BodySpec body;
+  body.name = "block";
+  body.box_min = {0.0, 0.0, 0.0};
+  body.box_max = {1.0, 1.0, 1.0};
+  body.spacing = {h / 2, h / 2, h / 2};
+  c.bodies.push_back(body);
+  NodeSetSpec base;
+  base.name = "base";
+  base.axis = 1;
+  base.at = 0.0;
+  for (int d = 0; d < 3; ++d) base.velocity[d] = TimeFunction{{{0.0, 0.0}}};
+  c.node_sets.push_back(base);
+  c.dt = 0.5 * stable_time_step(c).dt;
+  return c;
+}
+
+std::size_t resident_kib(const char* field) {
+  std::ifstream status("/proc/self/status");
+  for (std::string line; std::getline(status, line);) {
+    if (line.rfind(field, 0) == 0) return std::stoul(line.substr(std::string(field).size()));
+  }
+  return 0;
+}
+
+// Lets VmHWM (peak resident memory) restart from the current resident size.
+void reset_peak_resident() { std::ofstream("/proc/self/clear_refs") << "5"; }
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+}
+
+struct Timing {
+  double rate = 0.0;  // particle-steps per second
+  std::array<double, stage_count> stage_share{};
+  double setup = 0.0;  // s
+  std::size_t particles = 0;
+  std::int64_t sorts = 0;
+};
+
+Timing time_steps(const Case& c, int threads, bool serial, int steps) {
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+  const auto t0 = Clock::now();
+  Simulation<3, LinearShape> sim(c);
+  Timing t;
+  t.setup = std::chrono::duration<double>(Clock::now() - t0).count();
+  t.particles = sim.model().particle_count();
+  for (int s = 0; s < 2; ++s) serial ? sim.advance_serial() : sim.advance();  // warm-up
+  const auto before = sim.graph().stage_seconds();
+  const auto start = Clock::now();
+  for (int s = 0; s < steps; ++s) serial ? sim.advance_serial() : sim.advance();
+  const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  t.rate = static_cast<double>(t.particles) * steps / seconds;
+  for (int i = 0; i < stage_count; ++i) t.stage_share[i] = (sim.graph().stage_seconds()[i] - before[i]) / seconds;
+  t.sorts = sim.model().sorts;
+  return t;
+}
+
+std::vector<double> parse_sizes(const std::string& text) {
+  std::vector<double> sizes;
+  std::stringstream ss(text);
+  for (std::string item; std::getline(ss, item, ',');) sizes.push_back(std::stod(item));
+  return sizes;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<double> sizes{1e4, 1e5, 1e6};
+  double particle_steps = 3e7;  // per measurement, so that each lasts ~1 s or more
+  int repeats = 3;
+  std::string csv_path;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto next = [&] {
+      if (i + 1 >= argc) {
+        std::cerr << a << " needs a value\n";
+        std::exit(1);
+      }
+      return std::string(argv[++i]);
+    };
+    if (a == "--sizes") sizes = parse_sizes(next());
+    else if (a == "--particle-steps") particle_steps = std::stod(next());
+    else if (a == "--repeats") repeats = std::stoi(next());
+    else if (a == "--csv") csv_path = next();
+    else {
+      std::cerr << "usage: bench_throughput [--sizes 1e4,1e5,1e6] [--particle-steps 3e7] [--repeats 3] [--csv FILE]\n";
+      return a == "--help" ? 0 : 1;
+    }
+  }
+
+  std::printf("3D elastic block on a fixed base under gravity, USL, linear shape functions; medians of %d runs\n",
+              repeats);
+  std::printf("%10s %6s %10s %10s %8s %10s %8s %9s %9s %9s  %s\n", "particles", "steps", "1 thr", "2 thr",
+              "speedup", "serial 1t", "graph", "setup", "B/p peak", "B/p model", "stage shares at 2 threads");
+  std::printf("%10s %6s %10s %10s %8s %10s %8s %9s %9s %9s\n", "", "", "Mp-st/s", "Mp-st/s", "", "Mp-st/s",
+              "overhead", "s/Mp", "", "");
+  std::ofstream csv;
+  if (!csv_path.empty()) {
+    csv.open(csv_path);
+    csv << "particles,steps,rate_1t,rate_2t,speedup,rate_serial_1t,graph_overhead,setup_s_per_million,"
+           "bytes_per_particle_peak,bytes_per_particle_model";
+    for (int i = 0; i < stage_count; ++i) csv << ",share_" << stage_name(static_cast<Stage>(i));
+    csv << "\n";
+  }
+  for (double size : sizes) {
+    const Case c = block_case(static_cast<std::size_t>(size));
+    std::size_t n = 0;
+    std::vector<double> r1, r2, rs, setup;
+    std::array<std::vector<double>, stage_count> shares;
+    const int steps = std::max(5, static_cast<int>(particle_steps / size));
+    const std::size_t rss_before = resident_kib("VmRSS:");
+    reset_peak_resident();
+    for (int r = 0; r < repeats; ++r) {
+      const Timing serial = time_steps(c, 1, true, steps);
+      const Timing one = time_steps(c, 1, false, steps);
+      const Timing two = time_steps(c, 2, false, steps);
+      n = one.particles;
+      rs.push_back(serial.rate);
+      r1.push_back(one.rate);
+      r2.push_back(two.rate);
+      setup.push_back(one.setup);
+      for (int i = 0; i < stage_count; ++i) shares[i].push_back(two.stage_share[i]);
+    }
+    const double peak = 1024.0 * resident_kib("VmHWM:");
+    const double bpp_peak = peak / n, bpp_model = (peak - 1024.0 * rss_before) / n;
+    const double m1 = median(r1), m2 = median(r2), ms = median(rs);
+    std::ostringstream stage_text;
+    for (int i = 0; i < stage_count; ++i) {
+      const double share = median(shares[i]);
+      if (share > 0.0) stage_text << stage_name(static_cast<Stage>(i)) << " " << std::lround(100 * share) << "% ";
+    }
+    std::printf("%10zu %6d %10.2f %10.2f %8.2f %10.2f %7.1f%% %9.3f %9.0f %9.0f  %s\n", n, steps, m1 / 1e6, m2 / 1e6,
+                m2 / m1, ms / 1e6, 100.0 * (ms / m1 - 1.0), median(setup) / (n / 1e6), bpp_peak, bpp_model,
+                stage_text.str().c_str());
+    std::fflush(stdout);
+    if (csv) {
+      csv << n << "," << steps << "," << m1 << "," << m2 << "," << m2 / m1 << "," << ms << "," << (ms / m1 - 1.0)
+          << "," << median(setup) / (n / 1e6) << "," << bpp_peak << "," << bpp_model;
+      for (int i = 0; i < stage_count; ++i) csv << "," << median(shares[i]);
+      csv << "\n";
+    }
+  }
+  return 0;
+}
