@@ -26,7 +26,7 @@ void permute(std::vector<T>& field, const std::vector<std::uint32_t>& order) {
 template <int D, class Shape>
 Index<D> cell_of(const Grid<D>& grid, const Vec<D>& x) {
   Index<D> c;
-  for (int d = 0; d < D; ++d) c[d] = static_cast<int>(std::floor((x[d] - grid.origin[d]) * grid.inv_h[d]));
+  for (int d = 0; d < D; ++d) c[d] = floor_to_int((x[d] - grid.origin[d]) * grid.inv_h[d]);
   return c;
 }
 

@@ -4,7 +4,7 @@
 // a Dirac point, so the gradient jumps when a particle crosses a cell face
 // (the cell-crossing error of classic MPM).
 #pragma once
-#include <cmath>
+#include "engine/types.hpp"
 
 namespace flowmpm {
 
@@ -21,7 +21,7 @@ struct LinearShape {
   // first node `base`, weights w and derivatives dw = dN/dx.
   static void stencil(double g, double inv_h, int& base, double (&w)[support],
                       double (&dw)[support]) {
-    base = static_cast<int>(std::floor(g));
+    base = floor_to_int(g);
     const double s = g - base;
     w[0] = 1.0 - s;
     w[1] = s;

@@ -1,6 +1,8 @@
-// The nodes a particle touches, with N and dN at the particle: the tensor
-// product of the shape function's 1D stencils, evaluated once per particle
-// and stage.
+// The nodes a particle touches, with N (and optionally dN) at the particle:
+// the tensor product of the shape function's 1D stencils, evaluated once
+// per particle and stage. Node a of the stencil is (k_x, k_y, k_z) with
+// a = k_x + S (k_y + S k_z), S = Shape::support; every loop has a
+// compile-time trip count so that the compiler unrolls it completely.
 #pragma once
 #include <array>
 
@@ -8,47 +10,40 @@
 
 namespace flowmpm {
 
-template <int D, class Shape>
+template <int D, class Shape, bool WithGradient = true>
 struct Stencil {
-  static constexpr int size = [] {
-    int n = 1;
-    for (int d = 0; d < D; ++d) n *= Shape::support;
-    return n;
-  }();
+  static constexpr int S = Shape::support;
+  static constexpr int size = D == 1 ? S : D == 2 ? S * S : S * S * S;
 
-  std::array<std::size_t, size> node;
+  std::size_t first;                   // node index of k = (0, 0, 0)
+  std::array<std::size_t, size> node;  // node index of each stencil node
   std::array<double, size> N;
-  std::array<Vec<D>, size> dN;
+  std::array<Vec<D>, WithGradient ? size : 0> dN;
 
   Stencil(const Grid<D>& grid, const Vec<D>& x) {
-    double w[D][Shape::support], dw[D][Shape::support];
+    double w[D][S], dw[D][S];
     Index<D> base;
     for (int d = 0; d < D; ++d) {
       const double g = (x[d] - grid.origin[d]) * grid.inv_h[d];
       Shape::stencil(g, grid.inv_h[d], base[d], w[d], dw[d]);
     }
-    const std::size_t first = grid.node_index(base);
-    for (int a = 0; a < size; ++a) {
-      int k[D];
-      int rest = a;
-      for (int d = 0; d < D; ++d) {
-        k[d] = rest % Shape::support;
-        rest /= Shape::support;
-      }
-      std::size_t offset = 0, stride = 1;
-      double n = 1.0;
-      for (int d = 0; d < D; ++d) {
-        offset += static_cast<std::size_t>(k[d]) * stride;
-        stride *= static_cast<std::size_t>(grid.nodes[d]);
-        n *= w[d][k[d]];
-      }
-      node[a] = first + offset;
-      N[a] = n;
-      for (int d = 0; d < D; ++d) {
-        double g = dw[d][k[d]];
-        for (int e = 0; e < D; ++e)
-          if (e != d) g *= w[e][k[e]];
-        dN[a][d] = g;
+    first = grid.node_index(base);
+    const std::size_t sy = D > 1 ? static_cast<std::size_t>(grid.nodes[0]) : 0;
+    const std::size_t sz = D > 2 ? sy * static_cast<std::size_t>(grid.nodes[1]) : 0;
+    for (int kz = 0; kz < (D > 2 ? S : 1); ++kz) {
+      for (int ky = 0; ky < (D > 1 ? S : 1); ++ky) {
+        for (int kx = 0; kx < S; ++kx) {
+          const int a = kx + S * (ky + S * kz);
+          const double wy = D > 1 ? w[D > 1 ? 1 : 0][ky] : 1.0;
+          const double wz = D > 2 ? w[D > 2 ? 2 : 0][kz] : 1.0;
+          node[a] = first + kx + ky * sy + kz * sz;
+          N[a] = w[0][kx] * wy * wz;
+          if constexpr (WithGradient) {
+            dN[a][0] = dw[0][kx] * wy * wz;
+            if constexpr (D > 1) dN[a][1] = w[0][kx] * dw[1][ky] * wz;
+            if constexpr (D > 2) dN[a][2] = w[0][kx] * wy * dw[2][kz];
+          }
+        }
       }
     }
   }

@@ -29,6 +29,13 @@ constexpr int voigt_slot(int i, int j) {
   return 3 + k;             // yz -> 3, xz -> 4, xy -> 5
 }
 
+// floor(g) as an int, without a libm call (std::floor is one on x86-64
+// without SSE4.1); |g| must be well inside the int range.
+inline int floor_to_int(double g) {
+  const int i = static_cast<int>(g);
+  return i - (g < static_cast<double>(i));
+}
+
 // sigma : eps for symmetric tensors in Voigt order with tensor shear terms.
 inline double double_contraction(const Voigt& a, const Voigt& b) {
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + 2.0 * (a[3] * b[3] + a[4] * b[4] + a[5] * b[5]);

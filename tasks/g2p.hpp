@@ -51,24 +51,29 @@ void g2p_motion(Model<D, Shape>& model) {
   gather_by_block(model, [&](ParticleBatch<D>& b, std::uint32_t first, std::uint32_t last,
                              std::uint32_t block) {
     const Index<D> bc = model.blocks.block_coords(block);
+    const Vec<D>* velocity = grid.velocity.data();
+    const Vec<D>* velocity_change = grid.velocity_change.data();
     for (std::uint32_t p = first; p < last; ++p) {
-      const Stencil<D, Shape> s(grid, b.x[p]);
+      const Stencil<D, Shape, false> s(grid, b.x[p]);
       Vec<D> v_grid = Vec<D>::Zero(), dv = Vec<D>::Zero();
       for (int k = 0; k < s.size; ++k) {
-        v_grid += s.N[k] * grid.velocity[s.node[k]];
-        dv += s.N[k] * grid.velocity_change[s.node[k]];
+        v_grid += s.N[k] * velocity[s.node[k]];
+        dv += s.N[k] * velocity_change[s.node[k]];
       }
       const Vec<D> x_new = b.x[p] + dt * v_grid;
       // A particle must stay where its stencil has nodes and may cross at
       // most one cell per step; otherwise it is not moved and the step fails.
-      const Index<D> c_old = cell_of<D, Shape>(grid, b.x[p]);
-      const Index<D> c_new = cell_of<D, Shape>(grid, x_new);
       bool inside = true, one_cell = true;
+      Index<D> c_new;
       for (int d = 0; d < D; ++d) {
-        inside = inside && c_new[d] >= Shape::reach_below && c_new[d] + Shape::reach_above <= grid.cells[d];
-        one_cell = one_cell && std::abs(c_new[d] - c_old[d]) <= 1;
+        const double g_new = (x_new[d] - grid.origin[d]) * grid.inv_h[d];
+        inside = inside && g_new >= Shape::reach_below && g_new < grid.cells[d] - Shape::reach_above + 1;
+        if (!inside) break;
+        c_new[d] = floor_to_int(g_new);
+        const int c_old = floor_to_int((b.x[p][d] - grid.origin[d]) * grid.inv_h[d]);
+        one_cell = one_cell && std::abs(c_new[d] - c_old) <= 1;
       }
-      if (!inside || !one_cell || !x_new.allFinite()) {
+      if (!inside || !one_cell) {
         model.flags.fail(detail::describe_particle<D>(b.x[p], x_new) +
                          (!inside ? ", outside the grid" : ", more than one cell in one step"));
         continue;
@@ -87,17 +92,22 @@ void update_stress(Model<D, Shape>& model, ParticleBatch<D>& b, const MaterialMo
                    StateArray<MaterialModel>& states) {
   constexpr StressState S = Model<D, Shape>::stress_state;
   const auto& grid = model.grid;
+  const Vec<D>* velocity = grid.velocity.data();
   const double dt = model.dt;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, b.size(), 1024),
                     [&](const tbb::blocked_range<std::size_t>& r) {
     typename MaterialModel::State no_state{};
     for (std::size_t p = r.begin(); p != r.end(); ++p) {
       const Stencil<D, Shape> s(grid, b.x[p]);
-      Eigen::Matrix<double, D, D> L = Eigen::Matrix<double, D, D>::Zero();
-      for (int k = 0; k < s.size; ++k) L += grid.velocity[s.node[k]] * s.dN[k].transpose();
+      double L[D][D] = {};  // velocity gradient, in registers
+      for (int k = 0; k < s.size; ++k) {
+        const Vec<D>& v = velocity[s.node[k]];
+        for (int i = 0; i < D; ++i)
+          for (int j = 0; j < D; ++j) L[i][j] += v[i] * s.dN[k][j];
+      }
       Voigt deps{};
       for (int i = 0; i < D; ++i)
-        for (int j = i; j < D; ++j) deps[voigt_slot(i, j)] = 0.5 * (L(i, j) + L(j, i)) * dt;
+        for (int j = i; j < D; ++j) deps[voigt_slot(i, j)] = 0.5 * (L[i][j] + L[j][i]) * dt;
       auto& state = states.empty() ? no_state : states[p];
       material.template update<S>(state, b.stress[p], deps);
       for (int i = 0; i < 6; ++i) b.strain[p][i] += deps[i];

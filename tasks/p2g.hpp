@@ -17,13 +17,15 @@ void p2g_momentum(Model<D, Shape>& model) {
     grid.momentum[n].setZero();
   });
   scatter_by_colour(model, [&](ParticleBatch<D>& b, std::uint32_t first, std::uint32_t last, std::uint32_t) {
+    double* mass = grid.mass.data();
+    Vec<D>* momentum = grid.momentum.data();
     for (std::uint32_t p = first; p < last; ++p) {
-      const Stencil<D, Shape> s(grid, b.x[p]);
+      const Stencil<D, Shape, false> s(grid, b.x[p]);
       const double m = b.mass[p];
       const Vec<D> mv = m * b.v[p];
       for (int a = 0; a < s.size; ++a) {
-        grid.mass[s.node[a]] += s.N[a] * m;
-        grid.momentum[s.node[a]] += s.N[a] * mv;
+        mass[s.node[a]] += s.N[a] * m;
+        momentum[s.node[a]] += s.N[a] * mv;
       }
     }
   });
@@ -35,15 +37,20 @@ void p2g_force(Model<D, Shape>& model) {
   for_each_active_node(grid, [&](std::size_t n, const Index<D>&) { grid.force[n].setZero(); });
   const Vec<D> g = model.gravity;
   scatter_by_colour(model, [&](ParticleBatch<D>& b, std::uint32_t first, std::uint32_t last, std::uint32_t) {
+    Vec<D>* force = grid.force.data();
     for (std::uint32_t p = first; p < last; ++p) {
       const Stencil<D, Shape> s(grid, b.x[p]);
       const Voigt& sigma = b.stress[p];
-      Eigen::Matrix<double, D, D> Vsigma;
+      const double V = b.volume[p];
+      double Vsigma[D][D];
       for (int i = 0; i < D; ++i)
-        for (int j = 0; j < D; ++j) Vsigma(i, j) = b.volume[p] * sigma[voigt_slot(i, j)];
+        for (int j = 0; j < D; ++j) Vsigma[i][j] = V * sigma[voigt_slot(i, j)];
       const Vec<D> mg = b.mass[p] * g;
       for (int a = 0; a < s.size; ++a) {
-        grid.force[s.node[a]] += s.N[a] * mg - Vsigma * s.dN[a];
+        Vec<D> f = s.N[a] * mg;
+        for (int i = 0; i < D; ++i)
+          for (int j = 0; j < D; ++j) f[i] -= Vsigma[i][j] * s.dN[a][j];
+        force[s.node[a]] += f;
       }
     }
   });
