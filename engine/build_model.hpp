@@ -62,12 +62,23 @@ void build_model(const Case& c, Model<D, Shape>& model) {
     batch.volume.assign(n, volume);
     batch.stress.assign(n, Voigt{});
     batch.strain.assign(n, Voigt{});
+    batch.particle_length = std::pow(volume, 1.0 / D);
     batch.states = std::visit(
         [&](const auto& material) -> MaterialStates {
           using M = std::decay_t<decltype(material)>;
           // Models without internal variables store nothing per particle.
-          if constexpr (std::is_empty_v<typename M::State>) return StateArray<M>{};
-          else return StateArray<M>(n);
+          StateArray<M> states;
+          if constexpr (!std::is_empty_v<typename M::State>) {
+            states.reserve(n);
+            ParticleInit init;
+            init.axes_degrees = body.material_axes;
+            init.length = batch.particle_length;
+            for (const Vec<D>& x : batch.x) {
+              for (int d = 0; d < D; ++d) init.position[d] = x[d];
+              states.push_back(material.initial_state(init));
+            }
+          }
+          return states;
         },
         model.materials[body.material]);
     lightest = std::min(lightest, rho * volume);

@@ -216,6 +216,12 @@ void read_body(TableReader t, Case& c, std::size_t index) {
     }
   }
   b.velocity = vector_of(t, "velocity", c.dimension);
+  if (t.has("material_axes")) {
+    t.require(c.dimension > 1, "material_axes", "no material axes in 1D");
+    // 2D: one angle about z; 3D: angles about z, y and x (R = Rz Ry Rx).
+    const Vec3 angles = vector_of(t, "material_axes", c.dimension == 2 ? 1 : 3);
+    b.material_axes = angles;
+  }
   t.reject_unknown_keys();
   c.bodies.push_back(b);
 }

@@ -32,6 +32,8 @@ struct BodySpec {
   Vec3 box_min{}, box_max{};  // the box filled with particles
   Vec3 spacing{};             // particle spacing per axis (m)
   Vec3 velocity{};            // initial velocity (m/s)
+  // Rotation of the material axes (degrees) about z, y, x: R = Rz Ry Rx.
+  Vec3 material_axes{};
 };
 
 struct NodeSetSpec {

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "engine/types.hpp"
+#include "materials/material_input.hpp"
 #include "materials/stress_state.hpp"
 
 namespace flowmpm {
@@ -21,6 +22,7 @@ struct LinearElastic {
     double poisson_ratio = 0.0;    // -
   };
   struct State {};  // no internal variables
+  State initial_state(const ParticleInit&) const { return {}; }
 
   Parameters parameters;
   double lambda = 0.0, mu = 0.0;
@@ -41,13 +43,18 @@ struct LinearElastic {
 
   // Stress update for the strain increment `deps`. For reduced stress
   // states the out-of-plane components of `deps` are set here (uniaxial
-  // stress: d eps_yy = d eps_zz = -nu d eps_xx).
+  // stress: d eps_yy = d eps_zz = -nu d eps_xx; plane stress:
+  // d eps_zz = -lambda / (lambda + 2 mu) (d eps_xx + d eps_yy)).
   template <StressState S>
-  void update(State&, Voigt& sigma, Voigt& deps) const {
+  void update(State&, Voigt& sigma, Voigt& deps, const MaterialInput&) const {
     if constexpr (S == StressState::uniaxial_stress) {
       deps[1] = deps[2] = -parameters.poisson_ratio * deps[0];
       sigma[0] += parameters.youngs_modulus * deps[0];
       return;
+    }
+    if constexpr (S == StressState::plane_stress) {
+      // d sigma_zz = lambda (deps_xx + deps_yy + deps_zz) + 2 mu deps_zz = 0
+      deps[2] = -lambda / (lambda + 2.0 * mu) * (deps[0] + deps[1]);
     }
     // plane strain: deps_zz = 0 as given, so sigma_zz = lambda (deps_xx + deps_yy)
     const double trace = deps[0] + deps[1] + deps[2];

@@ -1,8 +1,18 @@
-// The registry of constitutive models. A model is a value type with
-// Parameters, a State of internal variables and a pure, const update
-// (DESIGN.md "Materials"); the engine dispatches on this variant once per
-// particle batch, never per particle. Adding a model means adding it to the
-// variant and to read_material() in material.cpp, nothing in engine/ or tasks/.
+// The registry of constitutive models (DESIGN.md "Materials"). A model is a
+// value type with
+//   static constexpr const char* type_name;          // the case file's `type`
+//   static Model read(TableReader&);                 // parameters, validated
+//   struct State;                                    // internal variables per particle
+//   State initial_state(const ParticleInit&) const;
+//   template <StressState S>
+//   void update(State&, Voigt& sigma, Voigt& deps, const MaterialInput&) const;
+//   double density() const;                          // kg/m^3
+//   double wave_speed() const;                       // fastest wave, m/s (stable dt)
+// `update` is pure apart from its outputs: stress, state, and for reduced
+// stress states the out-of-plane strain components of deps. The engine
+// dispatches on this variant once per particle batch, never per particle.
+// Adding a model means adding it to the variant below, nothing in engine/
+// or tasks/; read_material() finds it by type_name.
 #pragma once
 #include <string>
 #include <variant>

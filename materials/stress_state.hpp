@@ -7,6 +7,7 @@ namespace flowmpm {
 enum class StressState {
   three_d,          // all six components from the 3D velocity gradient
   plane_strain,     // 2D: eps_zz = eps_yz = eps_xz = 0, sigma_zz follows
+  plane_stress,     // 2D: sigma_zz = sigma_yz = sigma_xz = 0, eps_zz follows
   uniaxial_stress,  // 1D: sigma_yy = sigma_zz = 0, the lateral strains follow
 };
 
@@ -14,6 +15,7 @@ constexpr const char* stress_state_name(StressState s) {
   switch (s) {
     case StressState::three_d: return "3D";
     case StressState::plane_strain: return "plane strain";
+    case StressState::plane_stress: return "plane stress";
     case StressState::uniaxial_stress: return "uniaxial stress";
   }
   return "?";

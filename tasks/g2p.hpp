@@ -108,8 +108,14 @@ void update_stress(Model<D, Shape>& model, ParticleBatch<D>& b, const MaterialMo
       Voigt deps{};
       for (int i = 0; i < D; ++i)
         for (int j = i; j < D; ++j) deps[voigt_slot(i, j)] = 0.5 * (L[i][j] + L[j][i]) * dt;
+      MaterialInput input;
+      input.t = model.t + dt;
+      input.dt = dt;
+      input.length = b.particle_length;
+      for (int i = 0; i < D; ++i)
+        for (int j = 0; j < D; ++j) input.dL(i, j) = L[i][j] * dt;
       auto& state = states.empty() ? no_state : states[p];
-      material.template update<S>(state, b.stress[p], deps);
+      material.template update<S>(state, b.stress[p], deps, input);
       for (int i = 0; i < 6; ++i) b.strain[p][i] += deps[i];
       b.volume[p] *= 1.0 + deps[0] + deps[1] + deps[2];
     }

@@ -21,7 +21,7 @@ Voigt drive(const Voigt& total_strain, Voigt& strain_out) {
   for (int k = 0; k < 100; ++k) {
     Voigt deps;
     for (int i = 0; i < 6; ++i) deps[i] = total_strain[i] / 100.0;
-    steel_like.update<S>(state, sigma, deps);
+    steel_like.update<S>(state, sigma, deps, MaterialInput{});
     for (int i = 0; i < 6; ++i) strain_out[i] += deps[i];
   }
   return sigma;
@@ -55,6 +55,17 @@ TEST_CASE("plane strain: sigma_zz = nu (sigma_xx + sigma_yy)") {
   const Voigt sigma = drive<StressState::plane_strain>({1e-3, 4e-4, 0, 0, 0, 1e-4}, strain);
   CHECK(sigma[2] == doctest::Approx(0.2 * (sigma[0] + sigma[1])).epsilon(1e-12));
   CHECK(strain[2] == 0.0);
+}
+
+TEST_CASE("plane stress: sigma_zz = 0, sigma = E/(1-nu^2) [[1, nu], [nu, 1]] eps") {
+  Voigt strain;
+  const Voigt sigma = drive<StressState::plane_stress>({1e-3, 4e-4, 0, 0, 0, 1e-4}, strain);
+  const double E = 1000.0, nu = 0.2, Q = E / (1 - nu * nu);
+  CHECK(std::abs(sigma[2]) < 1e-12);
+  CHECK(sigma[0] == doctest::Approx(Q * (1e-3 + nu * 4e-4)).epsilon(1e-12));
+  CHECK(sigma[1] == doctest::Approx(Q * (4e-4 + nu * 1e-3)).epsilon(1e-12));
+  CHECK(sigma[5] == doctest::Approx(E / (1 + nu) * 1e-4).epsilon(1e-12));
+  CHECK(strain[2] == doctest::Approx(-nu / (1 - nu) * (1e-3 + 4e-4)).epsilon(1e-12));
 }
 
 TEST_CASE("1D uniaxial stress: sigma_xx = E eps_xx, lateral strains -nu eps_xx") {

@@ -1,0 +1,32 @@
+// What one material update sees besides its state and the stress, and what
+// a model's per-particle state is initialised from.
+#pragma once
+#include <array>
+
+#include <Eigen/Core>
+
+namespace flowmpm {
+
+struct MaterialInput {
+  double t = 0.0;   // time at the end of the increment (s)
+  double dt = 0.0;  // time step (s)
+  // Velocity gradient increment L dt (3 x 3; rows and columns of axes the
+  // analysis does not have are 0): sym(dL) is the strain increment, skew(dL)
+  // the rotation increment W dt that objective updates need.
+  Eigen::Matrix3d dL = Eigen::Matrix3d::Zero();
+  // Particle size (m): the cube root of its initial volume in 3D, the square
+  // root of its area in 2D, its length in 1D; for size-dependent
+  // regularisation (crack band).
+  double length = 0.0;
+};
+
+struct ParticleInit {
+  std::array<double, 3> position{};  // m
+  // Material-axes rotation of the particle's body, in degrees, about z, y
+  // and x, applied as R = Rz Ry Rx (NairnMPM's convention; seed 002). In 2D
+  // only the angle about z is used.
+  std::array<double, 3> axes_degrees{};
+  double length = 0.0;  // as MaterialInput::length
+};
+
+}  // namespace flowmpm
