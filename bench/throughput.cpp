@@ -8,7 +8,8 @@
 //   - set-up time (particles generated and sorted) per million particles;
 //   - peak resident memory per particle (whole process, and above the
 //     resident memory before the model was built);
-//   - the share of each stage in the step.
+//   - the share of each stage in the 1-thread step (the rest: sorting and
+//     the time loop).
 // Output steps are not part of this program (see README, output cost).
 //
 //   build/bench/bench_throughput [--sizes 1e4,1e5,1e6] [--steps-per-size N]
@@ -141,7 +142,7 @@ int main(int argc, char** argv) {
   std::printf("3D elastic block on a fixed base under gravity, USL, linear shape functions; medians of %d runs\n",
               repeats);
   std::printf("%10s %6s %10s %10s %8s %10s %8s %9s %9s %9s  %s\n", "particles", "steps", "1 thr", "2 thr",
-              "speedup", "serial 1t", "graph", "setup", "B/p peak", "B/p model", "stage shares at 2 threads");
+              "speedup", "serial 1t", "graph", "setup", "B/p peak", "B/p model", "stage shares at 1 thread");
   std::printf("%10s %6s %10s %10s %8s %10s %8s %9s %9s %9s\n", "", "", "Mp-st/s", "Mp-st/s", "", "Mp-st/s",
               "overhead", "s/Mp", "", "");
   std::ofstream csv;
@@ -169,7 +170,7 @@ int main(int argc, char** argv) {
       r1.push_back(one.rate);
       r2.push_back(two.rate);
       setup.push_back(one.setup);
-      for (int i = 0; i < stage_count; ++i) shares[i].push_back(two.stage_share[i]);
+      for (int i = 0; i < stage_count; ++i) shares[i].push_back(one.stage_share[i]);
     }
     const double peak = 1024.0 * resident_kib("VmHWM:");
     const double bpp_peak = peak / n, bpp_model = (peak - 1024.0 * rss_before) / n;

@@ -30,18 +30,27 @@ struct Stencil {
     first = grid.node_index(base);
     const std::size_t sy = D > 1 ? static_cast<std::size_t>(grid.nodes[0]) : 0;
     const std::size_t sz = D > 2 ? sy * static_cast<std::size_t>(grid.nodes[1]) : 0;
-    for (int kz = 0; kz < (D > 2 ? S : 1); ++kz) {
-      for (int ky = 0; ky < (D > 1 ? S : 1); ++ky) {
+    constexpr int Y = D > 1 ? S : 1, Z = D > 2 ? S : 1;
+    // Products over the y and z axes, formed once per (k_y, k_z) pair.
+    double w_yz[Z][Y], dy_yz[Z][Y], dz_yz[Z][Y];
+    for (int kz = 0; kz < Z; ++kz) {
+      for (int ky = 0; ky < Y; ++ky) {
+        const double wy = D > 1 ? w[D > 1 ? 1 : 0][ky] : 1.0, wz = D > 2 ? w[D > 2 ? 2 : 0][kz] : 1.0;
+        w_yz[kz][ky] = wy * wz;
+        dy_yz[kz][ky] = D > 1 ? dw[D > 1 ? 1 : 0][ky] * wz : 0.0;
+        dz_yz[kz][ky] = D > 2 ? wy * dw[D > 2 ? 2 : 0][kz] : 0.0;
+      }
+    }
+    for (int kz = 0; kz < Z; ++kz) {
+      for (int ky = 0; ky < Y; ++ky) {
         for (int kx = 0; kx < S; ++kx) {
           const int a = kx + S * (ky + S * kz);
-          const double wy = D > 1 ? w[D > 1 ? 1 : 0][ky] : 1.0;
-          const double wz = D > 2 ? w[D > 2 ? 2 : 0][kz] : 1.0;
           node[a] = first + kx + ky * sy + kz * sz;
-          N[a] = w[0][kx] * wy * wz;
+          N[a] = w[0][kx] * w_yz[kz][ky];
           if constexpr (WithGradient) {
-            dN[a][0] = dw[0][kx] * wy * wz;
-            if constexpr (D > 1) dN[a][1] = w[0][kx] * dw[1][ky] * wz;
-            if constexpr (D > 2) dN[a][2] = w[0][kx] * wy * dw[2][kz];
+            dN[a][0] = dw[0][kx] * w_yz[kz][ky];
+            if constexpr (D > 1) dN[a][1] = w[0][kx] * dy_yz[kz][ky];
+            if constexpr (D > 2) dN[a][2] = w[0][kx] * dz_yz[kz][ky];
           }
         }
       }
