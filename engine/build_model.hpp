@@ -26,6 +26,7 @@ void build_model(const Case& c, Model<D, Shape>& model) {
   for (const auto& m : c.materials) model.materials.push_back(m.model);
   for (int d = 0; d < D; ++d) model.gravity[d] = c.gravity[d];
   model.flip_fraction = c.flip_fraction;
+  if (D == 2 && c.plane_stress) model.stress_state = StressState::plane_stress;
   model.dt = c.dt;
 
   double lightest = std::numeric_limits<double>::infinity();
@@ -63,6 +64,7 @@ void build_model(const Case& c, Model<D, Shape>& model) {
     batch.stress.assign(n, Voigt{});
     batch.strain.assign(n, Voigt{});
     batch.particle_length = std::pow(volume, 1.0 / D);
+    for (int d = 0; d < D; ++d) batch.half_width[d] = 0.5 * body.spacing[d] * model.grid.inv_h[d];
     batch.states = std::visit(
         [&](const auto& material) -> MaterialStates {
           using M = std::decay_t<decltype(material)>;

@@ -39,7 +39,8 @@ struct StepFlags {
 
 template <int D, class Shape>
 struct Model {
-  static constexpr StressState stress_state =
+  // 3D, plane strain or plane stress (2D), uniaxial stress (1D).
+  StressState stress_state =
       D == 3 ? StressState::three_d : D == 2 ? StressState::plane_strain : StressState::uniaxial_stress;
 
   Grid<D> grid;

@@ -26,6 +26,7 @@ struct ParticleBatch {
   int body = 0;      // index into Case::bodies
   int material = 0;  // index into Case::materials
   double particle_length = 0.0;  // initial particle size (m), see MaterialInput::length
+  Vec<D> half_width = Vec<D>::Zero();  // initial half-width per axis, in cells (uGIMP)
   std::vector<Vec<D>> x, v;                // m, m/s
   std::vector<double> mass, volume;        // kg, m^3
   std::vector<Voigt> stress, strain;       // Pa, -

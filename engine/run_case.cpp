@@ -5,6 +5,8 @@
 
 #include <spdlog/spdlog.h>
 
+#include "engine/shape_bspline.hpp"
+#include "engine/shape_gimp.hpp"
 #include "engine/shape_linear.hpp"
 #include "engine/simulation.hpp"
 #include "io/results_h5.hpp"
@@ -26,7 +28,7 @@ std::string stored_fields(int dimension) {
 template <int D, class Shape>
 void log_model(const Case& c, const Model<D, Shape>& model, const Wiring& wiring) {
   spdlog::info("model: {}D ({}), scheme {} [{}], shape function {}, velocity update {}{}", D,
-               stress_state_name(Model<D, Shape>::stress_state), scheme_name(c.scheme),
+               stress_state_name(model.stress_state), scheme_name(c.scheme),
                wiring.describe(), Shape::name, c.velocity_update,
                c.velocity_update == "blend" ? " (FLIP fraction " + std::to_string(c.flip_fraction) + ")" : "");
   std::string cells;
@@ -141,31 +143,34 @@ RunSummary run(const Case& c, const RunOptions& options) {
   return summary;
 }
 
-template <int D>
-RunSummary run_dimension(const Case& c, const RunOptions& options) {
-  return run<D, LinearShape>(c, options);
+// Calls f.template operator()<D, Shape>() for the case's dimension and
+// shape function: the one dispatch from run-time choices to compiled code.
+template <class F>
+auto dispatch(const Case& c, F&& f) {
+  auto by_shape = [&]<int D>() {
+    if (c.shape_function == "gimp") return f.template operator()<D, GimpShape>();
+    if (c.shape_function == "bspline2") return f.template operator()<D, QuadraticBSpline>();
+    if (c.shape_function == "bspline3") return f.template operator()<D, CubicBSpline>();
+    return f.template operator()<D, LinearShape>();
+  };
+  switch (c.dimension) {
+    case 1: return by_shape.template operator()<1>();
+    case 2: return by_shape.template operator()<2>();
+    default: return by_shape.template operator()<3>();
+  }
 }
 
 }  // namespace
 
 RunSummary run_case(const Case& c, const RunOptions& options) {
-  switch (c.dimension) {
-    case 1: return run_dimension<1>(c, options);
-    case 2: return run_dimension<2>(c, options);
-    default: return run_dimension<3>(c, options);
-  }
+  return dispatch(c, [&]<int D, class Shape>() { return run<D, Shape>(c, options); });
 }
 
 void describe_case(const Case& c) {
-  auto describe = [&]<int D>() {
-    Simulation<D, LinearShape> sim(c);
+  dispatch(c, [&]<int D, class Shape>() {
+    Simulation<D, Shape> sim(c);
     log_model(c, sim.model(), sim.graph().wiring());
-  };
-  switch (c.dimension) {
-    case 1: describe.template operator()<1>(); break;
-    case 2: describe.template operator()<2>(); break;
-    default: describe.template operator()<3>(); break;
-  }
+  });
 }
 
 }  // namespace flowmpm

@@ -17,9 +17,10 @@ struct LinearShape {
   static constexpr int reach_below = 0;
   static constexpr int reach_above = 1;
 
-  // 1D stencil for a particle at grid coordinate g = (x - origin) / h:
-  // first node `base`, weights w and derivatives dw = dN/dx.
-  static void stencil(double g, double inv_h, int& base, double (&w)[support],
+  // 1D stencil for a particle at grid coordinate g = (x - origin) / h with
+  // half-width l_p / h (unused here): first node `base`, weights w and
+  // derivatives dw = dN/dx.
+  static void stencil(double g, double inv_h, double, int& base, double (&w)[support],
                       double (&dw)[support]) {
     base = floor_to_int(g);
     const double s = g - base;

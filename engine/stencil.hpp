@@ -20,12 +20,13 @@ struct Stencil {
   std::array<double, size> N;
   std::array<Vec<D>, WithGradient ? size : 0> dN;
 
-  Stencil(const Grid<D>& grid, const Vec<D>& x) {
+  // `half_width`: the particle's half-width per axis in cells (uGIMP).
+  Stencil(const Grid<D>& grid, const Vec<D>& x, const Vec<D>& half_width) {
     double w[D][S], dw[D][S];
     Index<D> base;
     for (int d = 0; d < D; ++d) {
       const double g = (x[d] - grid.origin[d]) * grid.inv_h[d];
-      Shape::stencil(g, grid.inv_h[d], base[d], w[d], dw[d]);
+      Shape::stencil(g, grid.inv_h[d], half_width[d], base[d], w[d], dw[d]);
     }
     first = grid.node_index(base);
     const std::size_t sy = D > 1 ? static_cast<std::size_t>(grid.nodes[0]) : 0;

@@ -127,7 +127,11 @@ void read_analysis(TableReader t, Case& c) {
   t.require(c.dimension >= 1 && c.dimension <= 3, "dimension", "1, 2 or 3");
   const std::string scheme = t.choice("scheme", {"usf", "usl", "musl"}, "usl");
   c.scheme = scheme == "usf" ? Scheme::usf : scheme == "usl" ? Scheme::usl : Scheme::musl;
-  c.shape_function = t.choice("shape_function", {"linear"}, "linear");
+  c.shape_function = t.choice("shape_function", {"linear", "gimp", "bspline2", "bspline3"}, "linear");
+  if (t.has("stress_state")) {
+    t.require(c.dimension == 2, "stress_state", "no stress_state outside 2D (3D is full, 1D uniaxial stress)");
+    c.plane_stress = t.choice("stress_state", {"plane_strain", "plane_stress"}) == "plane_stress";
+  }
   c.velocity_update = t.choice("velocity_update", {"flip", "pic", "blend"}, "flip");
   if (c.velocity_update == "blend") {
     c.flip_fraction = t.number("flip_fraction");

@@ -58,7 +58,8 @@ struct Case {
   std::filesystem::path file;
   int dimension = 3;
   Scheme scheme = Scheme::usl;
-  std::string shape_function = "linear";
+  std::string shape_function = "linear";  // "linear", "gimp", "bspline2", "bspline3"
+  bool plane_stress = false;              // 2D: plane stress instead of plane strain
   std::string velocity_update = "flip";
   double flip_fraction = 1.0;  // 1: FLIP, 0: PIC
   double dt = 0.0;             // s

@@ -54,7 +54,7 @@ void g2p_motion(Model<D, Shape>& model) {
     const Vec<D>* velocity = grid.velocity.data();
     const Vec<D>* velocity_change = grid.velocity_change.data();
     for (std::uint32_t p = first; p < last; ++p) {
-      const Stencil<D, Shape, false> s(grid, b.x[p]);
+      const Stencil<D, Shape, false> s(grid, b.x[p], b.half_width);
       Vec<D> v_grid = Vec<D>::Zero(), dv = Vec<D>::Zero();
       for (int k = 0; k < s.size; ++k) {
         v_grid += s.N[k] * velocity[s.node[k]];
@@ -87,10 +87,9 @@ void g2p_motion(Model<D, Shape>& model) {
   });
 }
 
-template <int D, class Shape, class MaterialModel>
+template <int D, class Shape, StressState S, class MaterialModel>
 void update_stress(Model<D, Shape>& model, ParticleBatch<D>& b, const MaterialModel& material,
                    StateArray<MaterialModel>& states) {
-  constexpr StressState S = Model<D, Shape>::stress_state;
   const auto& grid = model.grid;
   const Vec<D>* velocity = grid.velocity.data();
   const double dt = model.dt;
@@ -98,7 +97,7 @@ void update_stress(Model<D, Shape>& model, ParticleBatch<D>& b, const MaterialMo
                     [&](const tbb::blocked_range<std::size_t>& r) {
     typename MaterialModel::State no_state{};
     for (std::size_t p = r.begin(); p != r.end(); ++p) {
-      const Stencil<D, Shape> s(grid, b.x[p]);
+      const Stencil<D, Shape> s(grid, b.x[p], b.half_width);
       double L[D][D] = {};  // velocity gradient, in registers
       for (int k = 0; k < s.size; ++k) {
         const Vec<D>& v = velocity[s.node[k]];
@@ -129,7 +128,16 @@ void g2p_stress(Model<D, Shape>& model) {
     std::visit(
         [&](const auto& material) {
           using M = std::decay_t<decltype(material)>;
-          update_stress(model, batch, material, std::get<StateArray<M>>(batch.states));
+          auto& states = std::get<StateArray<M>>(batch.states);
+          if constexpr (D == 3) {
+            update_stress<D, Shape, StressState::three_d>(model, batch, material, states);
+          } else if constexpr (D == 1) {
+            update_stress<D, Shape, StressState::uniaxial_stress>(model, batch, material, states);
+          } else if (model.stress_state == StressState::plane_stress) {
+            update_stress<D, Shape, StressState::plane_stress>(model, batch, material, states);
+          } else {
+            update_stress<D, Shape, StressState::plane_strain>(model, batch, material, states);
+          }
         },
         model.materials[batch.material]);
   }

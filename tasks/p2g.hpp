@@ -20,7 +20,7 @@ void p2g_momentum(Model<D, Shape>& model) {
     double* mass = grid.mass.data();
     Vec<D>* momentum = grid.momentum.data();
     for (std::uint32_t p = first; p < last; ++p) {
-      const Stencil<D, Shape, false> s(grid, b.x[p]);
+      const Stencil<D, Shape, false> s(grid, b.x[p], b.half_width);
       const double m = b.mass[p];
       const Vec<D> mv = m * b.v[p];
       for (int a = 0; a < s.size; ++a) {
@@ -39,7 +39,7 @@ void p2g_force(Model<D, Shape>& model) {
   scatter_by_colour(model, [&](ParticleBatch<D>& b, std::uint32_t first, std::uint32_t last, std::uint32_t) {
     Vec<D>* force = grid.force.data();
     for (std::uint32_t p = first; p < last; ++p) {
-      const Stencil<D, Shape> s(grid, b.x[p]);
+      const Stencil<D, Shape> s(grid, b.x[p], b.half_width);
       const Voigt& sigma = b.stress[p];
       const double V = b.volume[p];
       double Vsigma[D][D];

@@ -4,17 +4,22 @@
 //   zero gradient sum         sum_I dN_I = 0
 //   linear reproduction       sum_I N_I x_I = x,  sum_I x_I (x) dN_I = I
 // Tolerance 1e-12: the sums are of O(1) terms, exact up to round-off.
+// Then continuity: uGIMP and B-spline weights and gradients are continuous
+// across a cell face, the linear gradient jumps (cell-crossing noise).
 #include <doctest/doctest.h>
 
+#include <map>
 #include <random>
 
+#include "engine/shape_bspline.hpp"
+#include "engine/shape_gimp.hpp"
 #include "engine/shape_linear.hpp"
 #include "engine/stencil.hpp"
 
 using namespace flowmpm;
 
 template <int D, class Shape>
-void check_invariants() {
+void check_invariants(double half_width = 0.25) {
   Vec<D> origin, h;
   Index<D> cells;
   for (int d = 0; d < D; ++d) {
@@ -32,7 +37,7 @@ void check_invariants() {
       const double lo = Shape::reach_below, hi = cells[d] - Shape::reach_above + 1;
       x[d] = origin[d] + h[d] * (lo + (hi - lo) * unit(rng));
     }
-    const Stencil<D, Shape> s(grid, x);
+    const Stencil<D, Shape> s(grid, x, Vec<D>::Constant(half_width));
     double sum_N = 0.0;
     Vec<D> sum_dN = Vec<D>::Zero(), sum_Nx = Vec<D>::Zero();
     Eigen::Matrix<double, D, D> sum_xdN = Eigen::Matrix<double, D, D>::Zero();
@@ -65,10 +70,65 @@ TEST_CASE("linear shape functions: partition of unity, zero gradient sum, linear
   check_invariants<3, LinearShape>();
 }
 
+TEST_CASE("uGIMP: the invariants for 1, 2, 3 and 4 particles per cell and axis") {
+  for (double lp : {0.5, 0.25, 1.0 / 6.0, 0.125}) {
+    CAPTURE(lp);
+    check_invariants<1, GimpShape>(lp);
+    check_invariants<2, GimpShape>(lp);
+    check_invariants<3, GimpShape>(lp);
+  }
+}
+
+TEST_CASE("quadratic and cubic B-splines: the invariants") {
+  check_invariants<1, QuadraticBSpline>();
+  check_invariants<2, QuadraticBSpline>();
+  check_invariants<3, QuadraticBSpline>();
+  check_invariants<1, CubicBSpline>();
+  check_invariants<2, CubicBSpline>();
+  check_invariants<3, CubicBSpline>();
+}
+
+namespace {
+
+// Largest change of any node's N and dN/dx when a 1D particle moves from
+// just below to just above the cell face at x = 3 h.
+template <class Shape>
+std::pair<double, double> jump_across_face(double lp) {
+  const Grid<1> grid(Vec<1>(0.0), Vec<1>(1.0), {8});
+  const double eps = 1e-9;
+  std::map<std::size_t, std::pair<double, double>> below, above;
+  const Stencil<1, Shape> a(grid, Vec<1>(3.0 - eps), Vec<1>(lp)), b(grid, Vec<1>(3.0 + eps), Vec<1>(lp));
+  for (int k = 0; k < a.size; ++k) below[a.node[k]] = {a.N[k], a.dN[k][0]};
+  for (int k = 0; k < b.size; ++k) above[b.node[k]] = {b.N[k], b.dN[k][0]};
+  double dN = 0.0, dG = 0.0;
+  for (std::size_t n = 0; n < grid.node_count(); ++n) {
+    const auto x = below.count(n) ? below[n] : std::pair{0.0, 0.0};
+    const auto y = above.count(n) ? above[n] : std::pair{0.0, 0.0};
+    dN = std::max(dN, std::abs(x.first - y.first));
+    dG = std::max(dG, std::abs(x.second - y.second));
+  }
+  return {dN, dG};
+}
+
+}  // namespace
+
+TEST_CASE("cell crossing: linear gradients jump, uGIMP and B-splines are continuous") {
+  // Linear: N continuous; dN/dx of the node on the face flips from +1/h
+  // (right node of the cell below) to -1/h (left node of the cell above).
+  CHECK(jump_across_face<LinearShape>(0.0).first < 1e-8);
+  CHECK(jump_across_face<LinearShape>(0.0).second == doctest::Approx(2.0));
+  // The smooth ones change by O(eps / h) = 1e-9 at most (tolerance 1e-7).
+  for (auto [N, G] : {jump_across_face<GimpShape>(0.25), jump_across_face<QuadraticBSpline>(0.0),
+                      jump_across_face<CubicBSpline>(0.0)}) {
+    CHECK(N < 1e-7);
+    CHECK(G < 1e-7);
+  }
+}
+
 TEST_CASE("linear shape function values by hand") {
   // Particle at (0.25, 0.5) in a unit cell: weights (0.75, 0.25) x (0.5, 0.5).
   const Grid<2> grid(Vec<2>::Zero(), Vec<2>::Ones(), {2, 2});
-  const Stencil<2, LinearShape> s(grid, Vec<2>(0.25, 0.5));
+  const Stencil<2, LinearShape> s(grid, Vec<2>(0.25, 0.5), Vec<2>::Zero());
   CHECK(s.node[0] == 0);
   CHECK(s.node[1] == 1);
   CHECK(s.node[2] == 3);
