@@ -1,4 +1,6 @@
-// flowmpm: run or check an explicit MPM case described by a TOML file.
+// flowmpm: run or check an explicit MPM case described by a TOML file, or
+// run a sweep of cases.
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -10,8 +12,10 @@
 #include <tbb/global_control.h>
 
 #include "engine/run_case.hpp"
+#include "engine/run_sweep.hpp"
 #include "engine/simulation.hpp"
 #include "io/case_reader.hpp"
+#include "io/sweep_file.hpp"
 
 namespace {
 
@@ -20,24 +24,33 @@ constexpr const char* usage = R"(flowmpm - explicit Material Point Method for so
 Usage:
   flowmpm run CASE.toml [--threads N] [--output DIR] [--set KEY=VALUE ...] [--quiet]
   flowmpm check CASE.toml [--set KEY=VALUE ...]
+  flowmpm sweep SWEEP.toml [--jobs N] [--threads N] [--output DIR] [--quiet]
   flowmpm --help | --version
 
 Commands:
   run     run the case; writes results.h5, results.xdmf (open in ParaView),
           timeseries.csv and summary.json to the output directory
   check   read and validate the case and describe the model it builds
+  sweep   run every case of a sweep file (a base case and the keys to vary);
+          writes sweep.csv (one row per case: the varied values, particles,
+          steps, wall time, particle-steps/s, error norms) and each case's
+          results in cases/NNN/ of the output directory; running it again
+          skips the cases already completed
 
 Options:
   --threads N       worker threads (default: all cores); results do not
-                    depend on N
-  --output DIR      output directory (overrides output.directory)
+                    depend on N; a sweep splits them between its jobs
+  --output DIR      output directory (overrides output.directory, or the
+                    sweep file's output)
+  --jobs N          sweep: cases run side by side (default 1)
   --set KEY=VALUE   override a key of the case, VALUE in TOML syntax, e.g.
                     --set analysis.dt=0.001 --set analysis.scheme=musl
                     --set bodies.0.velocity=[1.0,0,0]
   --quiet           log warnings and errors only
 
-Exit status: 0 on success, 1 for a bad case file or command line,
-2 if the simulation failed, 130 if interrupted.
+Exit status: 0 on success, 1 for a bad case file, sweep file or command
+line, 2 if the simulation (or a case of the sweep) failed, 130 if
+interrupted.
 )";
 
 std::atomic<bool> interrupted{false};
@@ -46,6 +59,7 @@ void on_signal(int) { interrupted = true; }
 struct Arguments {
   std::string command, case_file, output;
   int threads = 0;
+  int jobs = 0;  // 0: not given
   bool quiet = false;
   std::vector<std::string> overrides;
 };
@@ -70,12 +84,12 @@ Arguments parse(int argc, char** argv) {
     } else if (s == "--version") {
       std::cout << "flowmpm " << FLOWMPM_VERSION << "\n";
       std::exit(0);
-    } else if (s == "--threads") {
-      const std::string v = value("--threads");
+    } else if (s == "--threads" || s == "--jobs") {
+      const std::string v = value(s.c_str());
       char* end = nullptr;
       const long n = std::strtol(v.c_str(), &end, 10);
-      if (*end != '\0' || n < 1 || n > 1024) bad_usage("--threads: expected a positive integer, got '" + v + "'");
-      a.threads = static_cast<int>(n);
+      if (*end != '\0' || n < 1 || n > 1024) bad_usage(s + ": expected a positive integer, got '" + v + "'");
+      (s == "--threads" ? a.threads : a.jobs) = static_cast<int>(n);
     } else if (s == "--output") {
       a.output = value("--output");
     } else if (s == "--set") {
@@ -93,9 +107,37 @@ Arguments parse(int argc, char** argv) {
     }
   }
   if (a.command.empty()) bad_usage("no command given");
-  if (a.command != "run" && a.command != "check") bad_usage("unknown command '" + a.command + "'");
-  if (a.case_file.empty()) bad_usage(a.command + ": no case file given");
+  if (a.command != "run" && a.command != "check" && a.command != "sweep") {
+    bad_usage("unknown command '" + a.command + "'");
+  }
+  if (a.case_file.empty()) bad_usage(a.command + (a.command == "sweep" ? ": no sweep file given" : ": no case file given"));
+  if (a.command == "sweep" && !a.overrides.empty()) bad_usage("sweep: --set is not supported; vary the key in the sweep file");
+  if (a.command != "sweep" && a.jobs > 0) bad_usage(a.command + ": --jobs is for sweep only");
   return a;
+}
+
+// flowmpm sweep: reads and checks the whole sweep, then runs it.
+int sweep(const Arguments& args, int threads) {
+  flowmpm::Sweep s;
+  try {
+    s = flowmpm::read_sweep(args.case_file);
+  } catch (const flowmpm::CaseError& e) {
+    spdlog::error("{}", e.what());
+    return 1;
+  }
+  if (!args.output.empty()) s.output = args.output;
+  flowmpm::SweepOptions options;
+  options.jobs = std::max(1, args.jobs);
+  options.threads = threads;
+  options.interrupt = &interrupted;
+  try {
+    const flowmpm::SweepSummary summary = flowmpm::run_sweep(s, options);
+    if (summary.interrupted) return 130;
+    return summary.failed > 0 ? 2 : 0;
+  } catch (const std::exception& e) {
+    spdlog::error("{}", e.what());
+    return 2;
+  }
 }
 
 }  // namespace
@@ -108,6 +150,12 @@ int main(int argc, char** argv) {
   const int threads = args.threads > 0 ? args.threads
                                         : static_cast<int>(tbb::info::default_concurrency());
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+
+  if (args.command == "sweep") {
+    std::signal(SIGINT, on_signal);
+    std::signal(SIGTERM, on_signal);
+    return sweep(args, threads);
+  }
 
   flowmpm::Case c;
   const auto read_start = std::chrono::steady_clock::now();
