@@ -110,8 +110,10 @@ Arguments parse(int argc, char** argv) {
   if (a.command != "run" && a.command != "check" && a.command != "sweep") {
     bad_usage("unknown command '" + a.command + "'");
   }
-  if (a.case_file.empty()) bad_usage(a.command + (a.command == "sweep" ? ": no sweep file given" : ": no case file given"));
-  if (a.command == "sweep" && !a.overrides.empty()) bad_usage("sweep: --set is not supported; vary the key in the sweep file");
+  if (a.case_file.empty()) bad_usage(a.command + ": no " + (a.command == "sweep" ? "sweep" : "case") + " file given");
+  if (a.command == "sweep" && !a.overrides.empty()) {
+    bad_usage("sweep: --set is not supported; vary the key in the sweep file");
+  }
   if (a.command != "sweep" && a.jobs > 0) bad_usage(a.command + ": --jobs is for sweep only");
   return a;
 }

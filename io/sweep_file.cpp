@@ -41,12 +41,16 @@ std::string toml_string(std::string_view text) {
   return out + "\"";
 }
 
-// The shortest text that reads back to the same double, kept a TOML float.
+// The shortest text that reads back to the same double, kept a TOML float:
+// positional from 1e-4 to 1e16 (0.0004, not 4e-04), scientific outside.
 std::string float_text(double value) {
   if (std::isnan(value)) return "nan";
   if (std::isinf(value)) return value < 0.0 ? "-inf" : "inf";
+  const double size = std::abs(value);
+  const bool positional = size == 0.0 || (size >= 1e-4 && size < 1e16);
   char buffer[32];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value,
+                                    positional ? std::chars_format::fixed : std::chars_format::scientific);
   std::string text(buffer, result.ptr);
   if (text.find_first_of(".e") == std::string::npos) text += ".0";
   return text;
@@ -86,7 +90,9 @@ void check_key(const TableReader& t, const std::string& key, const toml::node& v
     throw CaseError(where + ": " + t.dotted(key) + ": expected a dotted case key such as \"analysis.dt\"");
   }
   const auto [it, inserted] = varied.emplace(key, where);
-  if (!inserted) throw CaseError(where + ": " + t.dotted(key) + ": " + key + " is varied twice (also at " + it->second + ")");
+  if (!inserted) {
+    throw CaseError(where + ": " + t.dotted(key) + ": " + key + " is varied twice (also at " + it->second + ")");
+  }
 }
 
 // The values of one varied key: a non-empty array of any TOML values.

@@ -3,133 +3,18 @@
 // lines give exit status 1 with one clear message and write nothing, a valid
 // run writes its results (and can run again over them).
 #include <doctest/doctest.h>
-#include <sys/types.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
-#include <atomic>
-#include <cerrno>
-#include <cstddef>
 #include <filesystem>
-#include <fstream>
 #include <initializer_list>
-#include <sstream>
 #include <string>
 #include <vector>
 
+#include "run_program.hpp"
+
 namespace fs = std::filesystem;
+using namespace flowmpm::testing;
 
 namespace {
-
-// A fresh directory, removed with everything in it at the end of the test.
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    static std::atomic<int> counter{0};
-    path = fs::temp_directory_path() /
-           ("flowmpm_test_cli_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-  ~TempDir() {
-    std::error_code ignored;
-    fs::remove_all(path, ignored);
-  }
-};
-
-struct Result {
-  int status = -1;     // exit status; 128 + signal number if killed by a signal
-  std::string output;  // stdout and stderr together
-};
-
-// Runs the flowmpm binary with `args` in the working directory `cwd`.
-Result run_flowmpm(const std::vector<std::string>& args, const fs::path& cwd) {
-  // Everything the child needs is prepared before fork().
-  std::vector<std::string> storage;
-  storage.emplace_back(FLOWMPM_EXECUTABLE);
-  storage.insert(storage.end(), args.begin(), args.end());
-  std::vector<char*> argv;
-  for (std::string& s : storage) argv.push_back(s.data());
-  argv.push_back(nullptr);
-  const std::string dir = cwd.string();
-
-  Result result;
-  int fds[2];
-  if (::pipe(fds) != 0) {
-    FAIL("pipe() failed");
-    return result;
-  }
-  const pid_t pid = ::fork();
-  if (pid < 0) {
-    ::close(fds[0]);
-    ::close(fds[1]);
-    FAIL("fork() failed");
-    return result;
-  }
-  if (pid == 0) {
-    ::dup2(fds[1], STDOUT_FILENO);
-    ::dup2(fds[1], STDERR_FILENO);
-    ::close(fds[0]);
-    ::close(fds[1]);
-    if (::chdir(dir.c_str()) != 0) ::_exit(126);
-    ::execv(argv[0], argv.data());
-    ::_exit(127);
-  }
-  ::close(fds[1]);
-  char buffer[4096];
-  for (;;) {
-    const ssize_t n = ::read(fds[0], buffer, sizeof buffer);
-    if (n > 0) {
-      result.output.append(buffer, static_cast<std::size_t>(n));
-    } else if (n == 0 || errno != EINTR) {
-      break;
-    }
-  }
-  ::close(fds[0]);
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
-  if (WIFEXITED(status)) {
-    result.status = WEXITSTATUS(status);
-  } else if (WIFSIGNALED(status)) {
-    result.status = 128 + WTERMSIG(status);
-  }
-  return result;
-}
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-void write_text(const fs::path& path, const std::string& text) {
-  std::ofstream out(path);
-  out << text;
-  REQUIRE(out.good());
-}
-
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
-
-std::vector<std::string> lines_of(const std::string& text) {
-  std::vector<std::string> lines;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
-  return lines;
-}
-
-std::vector<std::string> non_empty_lines(const std::string& text) {
-  std::vector<std::string> lines;
-  for (const std::string& line : lines_of(text)) {
-    if (line.find_first_not_of(" \t\r") != std::string::npos) lines.push_back(line);
-  }
-  return lines;
-}
 
 // The text of a case file, line by line, for editing.
 struct CaseText {
@@ -171,12 +56,6 @@ struct CaseText {
   }
 };
 
-std::vector<std::string> files_in(const fs::path& dir) {
-  std::vector<std::string> names;
-  for (const auto& entry : fs::directory_iterator(dir)) names.push_back(entry.path().filename().string());
-  return names;
-}
-
 // Writes `text` as a case file and runs both `flowmpm check` and
 // `flowmpm run --output ...` on it with `extra` arguments. Each must exit 1
 // with one message line naming the file (and `line` if > 0; neither if
@@ -217,7 +96,7 @@ void expect_rejected(const TempDir& dir, const std::string& text, int line,
 }  // namespace
 
 TEST_CASE("a bad case file is rejected with one clear message and nothing is written") {
-  TempDir dir;
+  TempDir dir("flowmpm_test_cli");
   CaseText c = CaseText::valid();
 
   SUBCASE("the valid case itself passes check") {
@@ -288,7 +167,7 @@ TEST_CASE("a bad case file is rejected with one clear message and nothing is wri
 }
 
 TEST_CASE("--set overrides are checked like the case file") {
-  TempDir dir;
+  TempDir dir("flowmpm_test_cli");
   const fs::path case_file = dir.path / "case.toml";
   write_text(case_file, CaseText::valid().text());
 
@@ -314,7 +193,7 @@ TEST_CASE("--set overrides are checked like the case file") {
 }
 
 TEST_CASE("command-line misuse") {
-  TempDir dir;
+  TempDir dir("flowmpm_test_cli");
   const fs::path case_file = dir.path / "case.toml";
   write_text(case_file, CaseText::valid().text());
 
@@ -346,7 +225,7 @@ TEST_CASE("command-line misuse") {
 }
 
 TEST_CASE("a missing case file") {
-  TempDir dir;
+  TempDir dir("flowmpm_test_cli");
   const fs::path missing = dir.path / "no_such_case.toml";
   const fs::path out = dir.path / "out";
   for (const std::string command : {"check", "run"}) {
@@ -362,7 +241,7 @@ TEST_CASE("a missing case file") {
 }
 
 TEST_CASE("a valid run writes its results, and runs again over them") {
-  TempDir dir;
+  TempDir dir("flowmpm_test_cli");
   const fs::path case_file = dir.path / "case.toml";
   write_text(case_file, CaseText::valid().text());
   const fs::path out = dir.path / "out";

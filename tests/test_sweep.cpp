@@ -1,0 +1,340 @@
+// flowmpm sweep: how a sweep file expands (product order, zipped lists),
+// and the program run on sweeps of the uniaxial stress case (8 particles,
+// milliseconds a case): sweep.csv, a failing case, skipping completed cases
+// on a second run, --jobs, and bad sweep files rejected up front.
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "io/case_reader.hpp"
+#include "io/sweep_file.hpp"
+#include "run_program.hpp"
+
+namespace fs = std::filesystem;
+using namespace flowmpm::testing;
+
+namespace {
+
+const std::string base_text =
+    read_text(fs::path(FLOWMPM_SOURCE_DIR) / "configs/uniaxial_stress/case1_usf.toml");
+
+// A scratch directory holding base.toml (uniaxial stress Case I, USF).
+struct SweepDir : TempDir {
+  SweepDir() : TempDir("flowmpm_test_sweep") { write_text(path / "base.toml", base_text); }
+
+  // Writes sweep.toml (base = "base.toml", output = "out", then `body`).
+  fs::path sweep(const std::string& body) const {
+    write_text(path / "sweep.toml", "base = \"base.toml\"\noutput = \"out\"\n" + body);
+    return path / "sweep.toml";
+  }
+
+  Result run(const std::vector<std::string>& extra = {}) const {
+    std::vector<std::string> args{"sweep", (path / "sweep.toml").string()};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return run_flowmpm(args, path);
+  }
+};
+
+// RFC 4180 fields of CSV text, row by row.
+std::vector<std::vector<std::string>> parse_csv(const std::string& text) {
+  std::vector<std::vector<std::string>> rows;
+  std::vector<std::string> row;
+  std::string field;
+  bool quoted = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (quoted) {
+      if (c == '"' && i + 1 < text.size() && text[i + 1] == '"') {
+        field += '"';
+        ++i;
+      } else if (c == '"') {
+        quoted = false;
+      } else {
+        field += c;
+      }
+    } else if (c == '"') {
+      quoted = true;
+    } else if (c == ',') {
+      row.push_back(field);
+      field.clear();
+    } else if (c == '\n') {
+      row.push_back(field);
+      rows.push_back(row);
+      row.clear();
+      field.clear();
+    } else {
+      field += c;
+    }
+  }
+  return rows;
+}
+
+// sweep.csv as one map per row, column name to field.
+std::vector<std::map<std::string, std::string>> table_of(const fs::path& csv) {
+  const auto rows = parse_csv(read_text(csv));
+  REQUIRE(!rows.empty());
+  std::vector<std::map<std::string, std::string>> table;
+  for (std::size_t r = 1; r < rows.size(); ++r) {
+    REQUIRE(rows[r].size() == rows[0].size());
+    std::map<std::string, std::string> row;
+    for (std::size_t c = 0; c < rows[0].size(); ++c) row[rows[0][c]] = rows[r][c];
+    table.push_back(row);
+  }
+  return table;
+}
+
+// Scheme over usf/usl, the second item of the zip makes a particle leave the
+// grid in the first step: cases 001 and 003 fail.
+const std::string failing_sweep = R"(
+[vary]
+"analysis.scheme" = ["usf", "usl"]
+[[zip]]
+"bodies.0.velocity" = [[0.0, 0.0, 0.0], [100.0, 0.0, 0.0]]
+)";
+
+}  // namespace
+
+TEST_CASE("a sweep expands [vary] keys in file order, then each [[zip]], the last fastest") {
+  SweepDir dir;
+  // velocity_update comes before scheme in the file, after it alphabetically.
+  const fs::path file = dir.sweep(R"(
+[vary]
+"analysis.velocity_update" = ["flip", "pic"]
+"analysis.scheme" = ["usf", "musl"]
+[[zip]]
+"analysis.dt" = [0.01, 0.001]
+"analysis.end_time" = [0.1, 0.2]
+[[zip]]
+"output.every" = [1, 2, 5]
+)");
+  const flowmpm::Sweep s = flowmpm::read_sweep(file);
+  CHECK(s.base == dir.path / "base.toml");
+  CHECK(s.output == "out");
+  CHECK(s.keys == std::vector<std::string>{"analysis.velocity_update", "analysis.scheme", "analysis.dt",
+                                           "analysis.end_time", "output.every"});
+  REQUIRE(s.cases.size() == 2 * 2 * 2 * 3);
+  CHECK(s.cases[0].id == "000");
+  CHECK(s.cases[23].id == "023");
+  CHECK(s.cases[0].overrides == std::vector<std::string>{"analysis.velocity_update=\"flip\"",
+                                                         "analysis.scheme=\"usf\"", "analysis.dt=0.01",
+                                                         "analysis.end_time=0.1", "output.every=1"});
+  CHECK(s.cases[0].values == std::vector<std::string>{"flip", "usf", "0.01", "0.1", "1"});
+  CHECK(s.cases[1].values == std::vector<std::string>{"flip", "usf", "0.01", "0.1", "2"});
+  CHECK(s.cases[3].values == std::vector<std::string>{"flip", "usf", "0.001", "0.2", "1"});
+  CHECK(s.cases[6].values == std::vector<std::string>{"flip", "musl", "0.01", "0.1", "1"});
+  CHECK(s.cases[12].values == std::vector<std::string>{"pic", "usf", "0.01", "0.1", "1"});
+  CHECK(s.cases[23].values == std::vector<std::string>{"pic", "musl", "0.001", "0.2", "5"});
+  // Every case was read with its overrides applied.
+  CHECK(s.cases[23].c.scheme == flowmpm::Scheme::musl);
+  CHECK(s.cases[23].c.velocity_update == "pic");
+  CHECK(s.cases[23].c.steps == 200);
+  CHECK(s.cases[23].c.output.every == 5);
+}
+
+TEST_CASE("a sweep without [vary] or [[zip]] is the base case alone, with the default output") {
+  SweepDir dir;
+  write_text(dir.path / "alone.toml", "base = \"base.toml\"\n");
+  const flowmpm::Sweep s = flowmpm::read_sweep(dir.path / "alone.toml");
+  REQUIRE(s.cases.size() == 1);
+  CHECK(s.cases[0].overrides.empty());
+  CHECK(s.keys.empty());
+  CHECK(s.output == fs::path("results/sweeps/alone"));
+}
+
+TEST_CASE("a varied value is passed on as the TOML text that reads back to it") {
+  const toml::table t = toml::parse(R"(
+values = [4e-4, 1e-5, 3.0, 1e300, -0.0, 12, true, "a\"b", [16, 32], { y = 0.0 }, [[0.0, 1.0], [2.5, -1.0]], inf]
+)");
+  std::vector<std::string> texts;
+  for (const toml::node& v : *t["values"].as_array()) texts.push_back(flowmpm::toml_text(v));
+  CHECK(texts == std::vector<std::string>{"0.0004", "1e-05", "3.0", "1e+300", "-0.0", "12", "true", "\"a\\\"b\"",
+                                          "[16, 32]", "{ y = 0.0 }", "[[0.0, 1.0], [2.5, -1.0]]", "inf"});
+}
+
+TEST_CASE("flowmpm sweep runs every case and writes sweep.csv") {
+  SweepDir dir;
+  dir.sweep(R"(
+[vary]
+"analysis.scheme" = ["usf", "usl", "musl"]
+[[zip]]
+"analysis.dt" = [0.01, 0.001]
+"analysis.end_time" = [0.1, 0.1]
+)");
+  const Result r = dir.run({"--threads", "2"});
+  INFO("printed:\n" << r.output);
+  REQUIRE(r.status == 0);
+  CHECK(contains(r.output, "sweep: 6/6 done (0 failed, 0 skipped)"));
+  CHECK(contains(r.output, "1 at a time on 2 threads each"));
+
+  const auto lines = lines_of(read_text(dir.path / "out/sweep.csv"));
+  REQUIRE(!lines.empty());
+  CHECK(lines[0] ==
+        "case,analysis.scheme,analysis.dt,analysis.end_time,status,particles,steps,wall_seconds,"
+        "particle_steps_per_second,message");
+  const auto table = table_of(dir.path / "out/sweep.csv");
+  REQUIRE(table.size() == 6);
+  const char* schemes[] = {"usf", "usf", "usl", "usl", "musl", "musl"};
+  const char* upper[] = {"USF", "USF", "USL", "USL", "MUSL", "MUSL"};
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    const auto& row = table[i];
+    INFO("row " << i);
+    CHECK(row.at("case") == "00" + std::to_string(i));
+    CHECK(row.at("analysis.scheme") == schemes[i]);
+    CHECK(row.at("analysis.dt") == (i % 2 == 0 ? "0.01" : "0.001"));
+    CHECK(row.at("status") == "completed");
+    CHECK(row.at("particles") == "8");
+    CHECK(row.at("steps") == (i % 2 == 0 ? "10" : "100"));
+    CHECK(std::stod(row.at("wall_seconds")) > 0.0);
+    CHECK(std::stod(row.at("particle_steps_per_second")) > 0.0);
+    CHECK(row.at("message").empty());
+    const fs::path case_dir = dir.path / "out/cases" / row.at("case");
+    CHECK(fs::is_regular_file(case_dir / "sweep_row.txt"));
+    CHECK(fs::is_regular_file(case_dir / "summary.json"));
+    CHECK(contains(read_text(case_dir / "summary.json"), std::string("\"scheme\": \"") + upper[i] + "\""));
+  }
+  for (const std::string& name : files_in(dir.path / "out")) CHECK_MESSAGE(!contains(name, ".tmp"), name);
+}
+
+TEST_CASE("a failing case is recorded with its message, the others go on, and a second run retries only it") {
+  SweepDir dir;
+  dir.sweep(failing_sweep);
+  const Result first = dir.run();
+  INFO("first run printed:\n" << first.output);
+  CHECK(first.status == 2);
+  CHECK(contains(first.output, "case 001 (analysis.scheme=\"usf\", bodies.0.velocity=[100.0, 0.0, 0.0]) failed"));
+  CHECK(contains(first.output, "4/4 done (2 failed, 0 skipped)"));
+
+  const std::string csv = read_text(dir.path / "out/sweep.csv");
+  const auto table = table_of(dir.path / "out/sweep.csv");
+  REQUIRE(table.size() == 4);
+  for (std::size_t i = 0; i < 4; ++i) {
+    INFO("row " << i);
+    const bool fails = i % 2 == 1;
+    CHECK(table[i].at("bodies.0.velocity") == (fails ? "[100.0, 0.0, 0.0]" : "[0.0, 0.0, 0.0]"));
+    CHECK(table[i].at("status") == (fails ? "failed" : "completed"));
+    CHECK(table[i].at("steps") == (fails ? "" : "10"));
+    if (fails) {
+      CHECK(contains(table[i].at("message"), "step 1"));
+      CHECK(contains(table[i].at("message"), "outside the grid"));
+    } else {
+      CHECK(table[i].at("message").empty());
+    }
+  }
+
+  const Result second = dir.run();
+  INFO("second run printed:\n" << second.output);
+  CHECK(second.status == 2);
+  CHECK(contains(second.output, "2 cases already completed, skipped"));
+  CHECK(contains(second.output, "running 2 cases"));
+  CHECK(contains(second.output, "case 001 (analysis.scheme=\"usf\", bodies.0.velocity=[100.0, 0.0, 0.0]) failed"));
+  CHECK(contains(second.output, "case 003 (analysis.scheme=\"usl\", bodies.0.velocity=[100.0, 0.0, 0.0]) failed"));
+  CHECK(contains(second.output, "4/4 done (2 failed, 2 skipped)"));
+  CHECK(read_text(dir.path / "out/sweep.csv") == csv);
+}
+
+TEST_CASE("a case whose overrides changed since the earlier run is run again") {
+  SweepDir dir;
+  dir.sweep("[vary]\n\"analysis.scheme\" = [\"usf\", \"usl\"]\n");
+  REQUIRE(dir.run().status == 0);
+  dir.sweep("[vary]\n\"analysis.scheme\" = [\"usf\", \"musl\"]\n");
+  const Result r = dir.run();
+  INFO("printed:\n" << r.output);
+  CHECK(r.status == 0);
+  CHECK(contains(r.output, "1 case already completed, skipped"));
+  CHECK(contains(r.output, "running 1 case,"));
+  const auto table = table_of(dir.path / "out/sweep.csv");
+  REQUIRE(table.size() == 2);
+  CHECK(table[1].at("analysis.scheme") == "musl");
+  CHECK(contains(read_text(dir.path / "out/cases/001/summary.json"), "\"scheme\": \"MUSL\""));
+}
+
+TEST_CASE("--jobs 2 gives the rows of --jobs 1, but for wall time and rate") {
+  SweepDir dir;
+  dir.sweep(failing_sweep);
+  auto rows = [&](const std::string& jobs, const std::string& out) {
+    const Result r = dir.run({"--jobs", jobs, "--threads", "2", "--output", out});
+    INFO("--jobs " << jobs << " printed:\n" << r.output);
+    CHECK(r.status == 2);
+    CHECK(contains(r.output, jobs + " at a time on " + (jobs == "1" ? "2 threads" : "1 thread") + " each"));
+    auto table = table_of(dir.path / out / "sweep.csv");
+    for (auto& row : table) {
+      row.erase("wall_seconds");
+      row.erase("particle_steps_per_second");
+    }
+    return table;
+  };
+  const auto one = rows("1", "one");
+  const auto two = rows("2", "two");
+  CHECK(one.size() == 4);
+  CHECK(one == two);
+}
+
+TEST_CASE("a bad sweep file stops the sweep up front with one message naming the problem, writing nothing") {
+  SweepDir dir;
+  auto rejected = [&](const std::string& body, std::initializer_list<std::string> fragments) {
+    dir.sweep(body);
+    const Result r = dir.run();
+    INFO("sweep file:\n" << body << "\nprinted:\n" << r.output);
+    CHECK(r.status == 1);
+    CHECK(non_empty_lines(r.output).size() == 1);
+    for (const std::string& fragment : fragments) CHECK_MESSAGE(contains(r.output, fragment), fragment);
+    CHECK(files_in(dir.path) == std::vector<std::string>{"base.toml", "sweep.toml"});
+  };
+  SUBCASE("an unknown key") {
+    rejected("varry = 1\n", {"sweep.toml:3", "varry", "unknown key"});
+  }
+  SUBCASE("zipped lists of unequal lengths") {
+    rejected("[[zip]]\n\"analysis.dt\" = [0.01, 0.001]\n\"analysis.end_time\" = [0.1, 0.1, 0.1]\n",
+             {"sweep.toml:5", "zip[0].analysis.end_time", "3 values", "zip[0].analysis.dt has 2", "equal lengths"});
+  }
+  SUBCASE("a key the case does not have") {
+    rejected("[vary]\n\"analysis.shceme\" = [\"usf\"]\n",
+             {"case 000", "analysis.shceme=\"usf\"", "analysis.shceme", "unknown key"});
+  }
+  SUBCASE("a value the case rejects, in the second case") {
+    rejected("[vary]\n\"analysis.dt\" = [0.01, 0.05]\n", {"case 001", "analysis.dt=0.05", "stable"});
+  }
+  SUBCASE("a key varied twice") {
+    rejected("[vary]\n\"analysis.dt\" = [0.01]\n[[zip]]\n\"analysis.dt\" = [0.001]\n",
+             {"sweep.toml:6", "analysis.dt is varied twice", "sweep.toml:4"});
+  }
+  SUBCASE("an empty list") {
+    rejected("[vary]\n\"analysis.dt\" = []\n", {"sweep.toml:4", "vary.analysis.dt", "non-empty array"});
+  }
+  SUBCASE("a dotted key left unquoted") {
+    rejected("[vary]\nanalysis.dt = [0.01]\n", {"vary.analysis", "quote a dotted key"});
+  }
+  SUBCASE("a base case that does not exist") {
+    write_text(dir.path / "sweep.toml", "base = \"nowhere.toml\"\n");
+    const Result r = dir.run();
+    INFO(r.output);
+    CHECK(r.status == 1);
+    CHECK(contains(r.output, "sweep.toml:1: base"));
+    CHECK(contains(r.output, "nowhere.toml does not exist"));
+    CHECK(files_in(dir.path) == std::vector<std::string>{"base.toml", "sweep.toml"});
+  }
+  SUBCASE("a sweep file that does not exist") {
+    const Result r = run_flowmpm({"sweep", "missing.toml"}, dir.path);
+    CHECK(r.status == 1);
+    CHECK(contains(r.output, "missing.toml: no such file"));
+  }
+}
+
+TEST_CASE("sweep command-line misuse") {
+  SweepDir dir;
+  dir.sweep("");
+  auto misuse = [&](const std::vector<std::string>& args, const std::string& fragment) {
+    const Result r = run_flowmpm(args, dir.path);
+    INFO("printed:\n" << r.output);
+    CHECK(r.status == 1);
+    CHECK(contains(r.output, fragment));
+    CHECK(files_in(dir.path) == std::vector<std::string>{"base.toml", "sweep.toml"});
+  };
+  misuse({"sweep"}, "no sweep file");
+  misuse({"sweep", "sweep.toml", "--jobs", "0"}, "--jobs");
+  misuse({"sweep", "sweep.toml", "--set", "analysis.dt=0.001"}, "--set");
+  misuse({"run", "base.toml", "--jobs", "2"}, "--jobs");
+}
