@@ -4,6 +4,7 @@
 #pragma once
 #include <atomic>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,7 +25,21 @@ struct NodeConstraint {
   TimeFunction velocity;  // m/s
 };
 
-// Problems found by a stage, reported after the step by the time loop.
+// A constrained plane at the edge of the material, for shape functions that
+// reach past it (uGIMP, B-splines): nodes outside it would otherwise move
+// freely and spoil the boundary condition. The plane acts as a mirror: the
+// material's image beyond it moves with the prescribed velocity V reflected
+// (antisymmetric: v_image = 2 V - v) along constrained axes and with the
+// same velocity (symmetric) along free axes. So each ghost node outside
+// (i) hands the mass, momentum and force it received to its mirror node
+// inside, with the sign of the symmetry, as the image particles would, and
+// (ii) takes its mirror's velocity, reflected. For a symmetric kernel this
+// gives v = V on the plane and keeps second-order accuracy (README).
+struct MirrorPlane {
+  std::string name;
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;  // (ghost, mirror)
+  std::array<std::optional<TimeFunction>, 3> velocity;     // prescribed per axis
+};// Problems found by a stage, reported after the step by the time loop.
 struct StepFlags {
   std::atomic<bool> resort_needed{false};
   std::atomic<bool> failed{false};
@@ -48,6 +63,7 @@ struct Model {
   std::vector<ParticleBatch<D>> batches;
   std::vector<Material> materials;
   std::vector<NodeConstraint> constraints;
+  std::vector<MirrorPlane> mirror_planes;
   Vec<D> gravity = Vec<D>::Zero();
   double flip_fraction = 1.0;
   // Nodes lighter than this carry no velocity (v = p / m would be noise).

@@ -71,6 +71,7 @@ void sort_particles(Model<D, Shape>& model) {
     }
     detail::permute(batch.x, order);
     detail::permute(batch.v, order);
+    detail::permute(batch.x0, order);
     detail::permute(batch.mass, order);
     detail::permute(batch.volume, order);
     detail::permute(batch.stress, order);

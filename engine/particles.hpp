@@ -28,6 +28,7 @@ struct ParticleBatch {
   double particle_length = 0.0;  // initial particle size (m), see MaterialInput::length
   Vec<D> half_width = Vec<D>::Zero();  // initial half-width per axis, in cells (uGIMP)
   std::vector<Vec<D>> x, v;                // m, m/s
+  std::vector<Vec<D>> x0;                  // initial positions, only when a reference needs them
   std::vector<double> mass, volume;        // kg, m^3
   std::vector<Voigt> stress, strain;       // Pa, -
   MaterialStates states;                   // the model's internal variables

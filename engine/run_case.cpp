@@ -8,6 +8,7 @@
 #include "engine/shape_bspline.hpp"
 #include "engine/shape_gimp.hpp"
 #include "engine/shape_linear.hpp"
+#include "engine/reference/reference.hpp"
 #include "engine/simulation.hpp"
 #include "io/results_h5.hpp"
 #include "io/xdmf.hpp"
@@ -94,6 +95,22 @@ RunSummary run(const Case& c, const RunOptions& options) {
     }
     summary.output_seconds += seconds_since(t0);
   };
+  std::optional<Reference> reference;
+  std::int64_t sample_every = 1;
+  auto sample_reference = [&] {
+    const auto t0 = Clock::now();
+    reference->sample(model);
+    summary.reference_seconds += seconds_since(t0);
+  };
+  if (!c.reference.type.empty()) {
+    reference.emplace(c.reference);
+    reference->initialise(model, c.end_time());
+    if (c.reference.samples > 0) sample_every = std::max<std::int64_t>(1, c.steps / c.reference.samples);
+    sample_reference();
+    spdlog::info("reference: {} (errors sampled every {} step{})", c.reference.type, sample_every,
+                 sample_every == 1 ? "" : "s");
+  }
+
   auto finish = [&](const std::string& status) {
     summary.status = status;
     summary.steps = model.step;
@@ -106,6 +123,7 @@ RunSummary run(const Case& c, const RunOptions& options) {
     for (std::size_t i = 0; i < c.bodies.size(); ++i) {
       summary.bodies.push_back({c.bodies[i].name, final_state.bodies[i].stress, final_state.bodies[i].strain});
     }
+    if (reference) summary.errors = reference->errors();
     if (options.write_results) write_summary(dir / "summary.json", summary);
   };
 
@@ -123,6 +141,7 @@ RunSummary run(const Case& c, const RunOptions& options) {
       const auto t0 = Clock::now();
       sim.advance();
       summary.step_loop_seconds += seconds_since(t0);
+      if (reference && (model.step % sample_every == 0 || model.step == c.steps)) sample_reference();
       if (model.step % every == 0 || model.step == c.steps) write_output();
       if (seconds_since(last_progress) >= options.progress_seconds) {
         last_progress = Clock::now();

@@ -295,6 +295,47 @@ void read_output(TableReader t, Case& c) {
   t.reject_unknown_keys();
 }
 
+void read_reference(TableReader t, Case& c) {
+  ReferenceSpec& r = c.reference;
+  r.type = t.choice("type", {"axial_vibration", "elastic_wave", "uniaxial_stress", "column_self_weight"});
+  auto positive = [&](std::string_view key, const char* what) {
+    const double v = t.number(key);
+    t.require(v > 0.0, key, what);
+    return v;
+  };
+  if (r.type == "axial_vibration" || r.type == "elastic_wave") {
+    t.require(c.dimension == 1, "type", "a 1D case (analysis.dimension = 1) for a bar reference");
+  }
+  if (r.type == "axial_vibration") {
+    r.origin = t.number("fixed_end");
+    r.length = positive("length", "the bar length in m");
+    r.velocity = positive("amplitude", "the velocity amplitude in m/s");
+    r.mode = static_cast<int>(t.integer_or("mode", 1));
+    t.require(r.mode >= 1, "mode", "a mode number >= 1");
+  } else if (r.type == "elastic_wave") {
+    r.origin = t.number("driven_end");
+    r.length = positive("length", "the bar length in m");
+    r.velocity = t.number("velocity");
+    t.require(r.velocity != 0.0, "velocity", "the velocity of the driven end in m/s, not 0");
+    r.probe = t.number("probe");
+    t.require(r.probe > r.origin && r.probe < r.origin + r.length, "probe", "a position inside the bar");
+  } else if (r.type == "uniaxial_stress") {
+    r.axis = axis_index(t, "axis", t.string("axis"), c.dimension);
+    r.length = positive("length", "the block length along the axis in m");
+    r.velocity = t.number("velocity");
+    t.require(r.velocity != 0.0, "velocity", "the loading velocity in m/s, not 0");
+  } else {
+    t.require(c.dimension >= 2, "type", "a 2D or 3D case for column_self_weight");
+    r.axis = axis_index(t, "axis", t.string("axis"), c.dimension);
+    r.origin = t.number("base");
+    r.length = positive("height", "the column height in m");
+    t.require(c.gravity[r.axis] < 0.0, "axis", "the axis along which gravity pulls (negative gravity component)");
+  }
+  r.samples = t.integer_or("samples", 0);
+  t.require(r.samples >= 0, "samples", "a number of error samples >= 0 (0: every step)");
+  t.reject_unknown_keys();
+}
+
 }  // namespace
 
 StableStep stable_time_step(const Case& c) {
@@ -351,6 +392,7 @@ Case read_case(const std::filesystem::path& file, const std::vector<std::string>
   for (std::size_t i = 0; i < bodies.size(); ++i) read_body(bodies[i], c, i);
   const auto node_sets = t.tables("node_sets");
   for (std::size_t i = 0; i < node_sets.size(); ++i) read_node_set(node_sets[i], c, i);
+  if (t.has("reference")) read_reference(t.table("reference"), c);
   if (t.has("output")) {
     read_output(t.table("output"), c);
   } else {

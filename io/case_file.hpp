@@ -47,6 +47,19 @@ struct NodeSetSpec {
   std::array<std::optional<TimeFunction>, 3> velocity;
 };
 
+// An analytical solution to measure the run against ([reference] table;
+// see engine/reference/ and README "Verification").
+struct ReferenceSpec {
+  std::string type;  // empty: none
+  double origin = 0.0;    // fixed end, driven end or base (m)
+  double length = 0.0;    // bar length or column height (m)
+  double velocity = 0.0;  // vibration amplitude or driving velocity (m/s)
+  double probe = 0.0;     // wave probe position (m)
+  int mode = 1;           // vibration mode
+  int axis = 0;           // loading axis
+  std::int64_t samples = 0;  // error samples over the run (0: every step)
+};
+
 struct OutputSpec {
   std::filesystem::path directory;
   std::int64_t every = 0;  // steps between output steps (0: first and last only)
@@ -71,6 +84,7 @@ struct Case {
   std::vector<BodySpec> bodies;
   std::vector<NodeSetSpec> node_sets;
   OutputSpec output;
+  ReferenceSpec reference;
 };
 
 // Reads and validates a case. `overrides` are "dotted.key=VALUE" strings

@@ -176,7 +176,9 @@ std::vector<TableReader> TableReader::tables(std::string_view key) {
   const toml::node* n = node(key);
   if (!n) return result;
   const toml::array* array = n->as_array();
-  if (!array || !array->is_array_of_tables()) fail_at(*n, key, "an array of tables ([[" + dotted(key) + "]])");
+  if (!array || (!array->empty() && !array->is_array_of_tables())) {
+    fail_at(*n, key, "an array of tables ([[" + dotted(key) + "]])");
+  }
   for (std::size_t i = 0; i < array->size(); ++i) {
     result.emplace_back(*array->get(i)->as_table(), dotted(key) + "[" + std::to_string(i) + "]", file_, overrides_);
   }

@@ -75,6 +75,7 @@ std::string summary_json(const RunSummary& s) {
   field("setup_seconds", number(s.setup_seconds));
   field("step_loop_seconds", number(s.step_loop_seconds));
   field("output_seconds", number(s.output_seconds));
+  field("reference_seconds", number(s.reference_seconds));
   field("particle_steps_per_second", number(s.particle_steps_per_second));
 
   out += "  \"bodies\": [";

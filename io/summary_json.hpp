@@ -27,6 +27,7 @@ struct RunSummary {
   double setup_seconds = 0.0;            // case read, particles generated and sorted
   double step_loop_seconds = 0.0;        // wall time of the step loop, output excluded
   double output_seconds = 0.0;           // wall time spent writing results
+  double reference_seconds = 0.0;        // wall time spent measuring errors
   double particle_steps_per_second = 0.0;
   std::vector<BodySummary> bodies;
   // Error norms against a reference solution, by name (empty without one).

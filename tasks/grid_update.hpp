@@ -1,5 +1,5 @@
 // Grid stages (DESIGN.md). grid_velocity: v_I = p_I / m_I where m_I is above
-// the mass threshold, then the prescribed velocities (p_I follows). 
+// the mass threshold, then the prescribed velocities (p_I follows).
 // grid_integrate: p_I += f_I dt, v_I^new = p_I / m_I, prescribed velocities
 // at t + dt, and dv_I = v_I^new - v_I for the FLIP update; v_I becomes
 // v_I^new so that the stages after it read the updated velocity.
@@ -18,12 +18,37 @@ void apply_velocity_constraints(Model<D, Shape>& model, double time) {
       grid.momentum[n][c.axis] = grid.mass[n] * value;
     }
   }
+  // Ghost nodes take their mirror's velocity, reflected about the plane's.
+  for (const MirrorPlane& plane : model.mirror_planes) {
+    for (int d = 0; d < D; ++d) {
+      const bool constrained = plane.velocity[d].has_value();
+      const double V = constrained ? (*plane.velocity[d])(time) : 0.0;
+      for (auto [ghost, mirror] : plane.pairs) {
+        grid.velocity[ghost][d] = constrained ? 2.0 * V - grid.velocity[mirror][d] : grid.velocity[mirror][d];
+        grid.momentum[ghost][d] = grid.mass[ghost] * grid.velocity[ghost][d];
+      }
+    }
+  }
+}
+
+// Hands what the ghost nodes received to their mirror nodes (MirrorPlane):
+// `field` is momentum or force, `mass` too for the former.
+template <int D, class Shape>
+void fold_mirror_planes(Model<D, Shape>& model, std::vector<Vec<D>>& field, bool with_mass) {
+  auto& grid = model.grid;
+  for (const MirrorPlane& plane : model.mirror_planes) {
+    for (auto [ghost, mirror] : plane.pairs) {
+      if (with_mass) grid.mass[mirror] += grid.mass[ghost];
+      for (int d = 0; d < D; ++d) field[mirror][d] += (plane.velocity[d] ? -1.0 : 1.0) * field[ghost][d];
+    }
+  }
 }
 
 template <int D, class Shape>
 void grid_velocity(Model<D, Shape>& model) {
   auto& grid = model.grid;
   const double threshold = model.mass_threshold;
+  fold_mirror_planes(model, grid.momentum, true);
   for_each_active_node(grid, [&](std::size_t n, const Index<D>&) {
     grid.velocity[n] = grid.mass[n] > threshold ? Vec<D>(grid.momentum[n] / grid.mass[n]) : Vec<D>::Zero();
   });
@@ -34,6 +59,7 @@ template <int D, class Shape>
 void grid_integrate(Model<D, Shape>& model) {
   auto& grid = model.grid;
   const double threshold = model.mass_threshold, dt = model.dt;
+  fold_mirror_planes(model, grid.force, false);
   for_each_active_node(grid, [&](std::size_t n, const Index<D>&) {
     grid.velocity_change[n] = grid.velocity[n];  // v_I before the update
     if (grid.mass[n] > threshold) {

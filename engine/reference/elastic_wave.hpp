@@ -1,0 +1,72 @@
+// An elastic wave in a 1D bar at rest, its end x_e driven at constant
+// velocity v0 into the bar (a node-set constraint of the case): a stress
+// step sigma = -rho c v0 (c = sqrt(E / rho)) travels along the bar and
+// reaches the probe at X_p after t_a = (X_p - x_e) / c; the reflection from
+// the free far end (x_e + L) comes back at t_r = (2 L - (X_p - x_e)) / c.
+// The probe is the particle that started nearest X_p. Errors:
+//   travel_time: |t_measured - t_a| / t_a, t_measured when |sigma_probe|
+//                first reaches half the amplitude (interpolated in time);
+//   amplitude:   |mean sigma_probe - sigma| / |sigma| over the plateau
+//                [(t_a + t_r) / 2, t_r).
+#pragma once
+#include <limits>
+#include <map>
+#include <string>
+
+#include "engine/reference/error_norm.hpp"
+#include "io/case_file.hpp"
+
+namespace flowmpm {
+
+struct ElasticWave {
+  double x_end, length, v0, probe;
+  double c = 0.0, amplitude = 0.0, t_arrival = 0.0, t_reflection = 0.0;
+  double measured_arrival = std::numeric_limits<double>::quiet_NaN();
+  double last_t = 0.0, last_stress = 0.0, plateau_sum = 0.0;
+  int plateau_samples = 0;
+
+  explicit ElasticWave(const ReferenceSpec& r)
+      : x_end(r.origin), length(r.length), v0(r.velocity), probe(r.probe) {}
+
+  template <int D, class Shape>
+  void initialise(Model<D, Shape>& model, double end_time) {
+    const LinearElastic& m = elastic_material(model, "elastic_wave");
+    c = std::sqrt(m.parameters.youngs_modulus / m.parameters.density);
+    amplitude = -m.parameters.density * c * v0;
+    t_arrival = (probe - x_end) / c;
+    t_reflection = (2.0 * length - (probe - x_end)) / c;
+    if (end_time < t_reflection) {
+      throw CaseError("reference elastic_wave: analysis.end_time must reach the reflection's return to the probe, " +
+                      std::to_string(t_reflection) + " s");
+    }
+  }
+
+  template <int D, class Shape>
+  void sample(const Model<D, Shape>& model) {
+    double best = std::numeric_limits<double>::infinity(), stress = 0.0;
+    for (const auto& b : model.batches) {
+      for (std::size_t p = 0; p < b.size(); ++p) {
+        const double distance = std::abs(b.x0[p][0] - probe);
+        if (distance < best) best = distance, stress = b.stress[p][0];
+      }
+    }
+    const double t = model.t, half = 0.5 * std::abs(amplitude);
+    if (std::isnan(measured_arrival) && std::abs(stress) >= half) {
+      const double f = (half - std::abs(last_stress)) / (std::abs(stress) - std::abs(last_stress));
+      measured_arrival = last_t + f * (t - last_t);
+    }
+    if (t >= 0.5 * (t_arrival + t_reflection) && t < t_reflection) {
+      plateau_sum += stress;
+      ++plateau_samples;
+    }
+    last_t = t;
+    last_stress = stress;
+  }
+
+  std::map<std::string, double> errors() const {
+    return {{"travel_time", std::abs(measured_arrival - t_arrival) / t_arrival},
+            {"amplitude", std::abs(plateau_sum / plateau_samples - amplitude) / std::abs(amplitude)}};
+  }
+};
+
+}  // namespace flowmpm
