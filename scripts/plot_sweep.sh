@@ -58,9 +58,10 @@ if not lines:
 def quoted(text):  # a gnuplot single-quoted string
     return "'" + text.replace("'", "''") + "'"
 
-out = [f"set terminal {terminal} size 1000,650", f"set output {quoted(png)}", "set termoption noenhanced",
+# The key goes below the plot; the image grows with it.
+out = [f"set terminal {terminal} size 1000,{600 + 20 * len(lines)}", f"set output {quoted(png)}", "set termoption noenhanced",
        "set logscale xy", "set format x '%g'", "set format y '%g'", "set grid",
-       "set key outside right top",
+       "set key below",
        "set xlabel 'wall time of the step loop (s)'", f"set ylabel {quoted(error)}",
        f"set title {quoted(error + ' against wall time: ' + csv_file)}"]
 plots = []

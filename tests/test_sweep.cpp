@@ -4,6 +4,7 @@
 // on a second run, --jobs, and bad sweep files rejected up front.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <map>
 #include <string>
@@ -196,6 +197,34 @@ TEST_CASE("flowmpm sweep runs every case and writes sweep.csv") {
     CHECK(contains(read_text(case_dir / "summary.json"), std::string("\"scheme\": \"") + upper[i] + "\""));
   }
   for (const std::string& name : files_in(dir.path / "out")) CHECK_MESSAGE(!contains(name, ".tmp"), name);
+}
+
+TEST_CASE("sweep.csv has one column per error norm of the cases, sorted, between the rate and the message") {
+  SweepDir dir;
+  // A case with a reference solution: its summary has error norms.
+  const fs::path base = fs::path(FLOWMPM_SOURCE_DIR) / "configs/verification/bar_vibration_small.toml";
+  write_text(dir.path / "sweep.toml", "base = \"" + base.string() + "\"\noutput = \"out\"\n" +
+                                          "[vary]\n\"analysis.shape_function\" = [\"linear\", \"bspline2\"]\n");
+  const Result r = dir.run();
+  INFO("printed:\n" << r.output);
+  REQUIRE(r.status == 0);
+  const auto rows = parse_csv(read_text(dir.path / "out/sweep.csv"));
+  REQUIRE(rows.size() == 3);
+  const auto& header = rows[0];
+  const auto first = std::find(header.begin(), header.end(), "particle_steps_per_second") + 1;
+  const auto last = header.end() - 1;
+  CHECK(*last == "message");
+  const std::vector<std::string> errors(first, last);
+  CHECK(!errors.empty());
+  CHECK(std::is_sorted(errors.begin(), errors.end()));
+  for (std::size_t row = 1; row < rows.size(); ++row) {
+    const std::string summary = read_text(dir.path / "out/cases" / rows[row][0] / "summary.json");
+    for (std::size_t c = static_cast<std::size_t>(first - header.begin()); c + 1 < header.size(); ++c) {
+      INFO("row " << row << ", column " << header[c]);
+      CHECK(std::stod(rows[row][c]) > 0.0);
+      CHECK(contains(summary, "\"" + header[c] + "\": "));
+    }
+  }
 }
 
 TEST_CASE("a failing case is recorded with its message, the others go on, and a second run retries only it") {
