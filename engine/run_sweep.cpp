@@ -44,14 +44,15 @@ std::string listed(const std::vector<std::string>& overrides) {
   return out.empty() ? "the base case" : out;
 }
 
-// sweep_row.txt (TOML): the case's overrides and its row, every number
-// written so that it reads back exactly.
-std::string row_file_text(const SweepCase& sc, const SweepRow& row) {
+// sweep_row.txt (TOML): what the case ran (the base case's digest and the
+// overrides) and its row, every number written so that it reads back exactly.
+std::string row_file_text(const Sweep& sweep, const SweepCase& sc, const SweepRow& row) {
   toml::array overrides;
   for (const std::string& o : sc.overrides) overrides.push_back(o);
   toml::table errors;
   for (const auto& [name, value] : row.errors) errors.insert(name, value);
   toml::table t;
+  t.insert("base_digest", sweep.base_digest);
   t.insert("overrides", std::move(overrides));
   t.insert("status", row.completed ? "completed" : "failed");
   t.insert("particles", static_cast<std::int64_t>(row.particles));
@@ -65,10 +66,10 @@ std::string row_file_text(const SweepCase& sc, const SweepRow& row) {
   return text.str();
 }
 
-// The row of an earlier run of this case, if it completed with the same
-// overrides; anything else (absent, failed, other overrides, unreadable)
-// runs the case again.
-std::optional<SweepRow> completed_row(const fs::path& file, const SweepCase& sc) {
+// The row of an earlier run of this case, if it completed with the same base
+// case and overrides; anything else (absent, failed, an edited base case,
+// other overrides, unreadable) runs the case again.
+std::optional<SweepRow> completed_row(const fs::path& file, const Sweep& sweep, const SweepCase& sc) {
   if (!fs::is_regular_file(file)) return std::nullopt;
   toml::table t;
   try {
@@ -76,6 +77,7 @@ std::optional<SweepRow> completed_row(const fs::path& file, const SweepCase& sc)
   } catch (const toml::parse_error&) {
     return std::nullopt;
   }
+  if (t["base_digest"].value<std::string>() != sweep.base_digest) return std::nullopt;
   const toml::array* overrides = t["overrides"].as_array();
   if (!overrides || overrides->size() != sc.overrides.size()) return std::nullopt;
   for (std::size_t i = 0; i < sc.overrides.size(); ++i) {
@@ -212,7 +214,7 @@ SweepSummary run_sweep(const Sweep& sweep, const SweepOptions& options) {
   std::vector<std::optional<SweepRow>> rows(n);
   std::vector<std::size_t> todo;
   for (std::size_t i = 0; i < n; ++i) {
-    rows[i] = completed_row(case_dir(i) / row_file, sweep.cases[i]);
+    rows[i] = completed_row(case_dir(i) / row_file, sweep, sweep.cases[i]);
     if (rows[i]) {
       ++summary.skipped;
     } else {
@@ -246,7 +248,7 @@ SweepSummary run_sweep(const Sweep& sweep, const SweepOptions& options) {
   auto last_progress = start;
 
   auto finish = [&](std::size_t i, const SweepRow& row) {
-    write_file_atomically(case_dir(i) / row_file, row_file_text(sweep.cases[i], row));
+    write_file_atomically(case_dir(i) / row_file, row_file_text(sweep, sweep.cases[i], row));
     const std::lock_guard lock(mutex);
     rows[i] = row;
     ++ran;

@@ -1,7 +1,8 @@
 // Runs the cases of a sweep in-process, several side by side, and writes
 // <output>/sweep.csv. Each case runs in <output>/cases/<id> and leaves a
 // sweep_row.txt there; running the sweep again skips the cases already
-// completed with the same overrides. See README.md "Parameter sweeps".
+// completed with the same base case and overrides. See README.md
+// "Parameter sweeps".
 #pragma once
 #include <atomic>
 #include <cstddef>

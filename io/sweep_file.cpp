@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <fstream>
 #include <map>
 #include <sstream>
 #include <utility>
@@ -116,6 +118,16 @@ std::string joined(const std::vector<std::string>& parts, std::string_view separ
   return out;
 }
 
+// FNV-1a, 64 bits, in hex: enough to tell two versions of a file apart.
+std::string digest_of_file(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::uint64_t h = 14695981039346656037ull;
+  for (char c; in.get(c);) h = (h ^ static_cast<unsigned char>(c)) * 1099511628211ull;
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
+  return hex;
+}
+
 toml::table parse_sweep_file(const std::filesystem::path& file) {
   if (!std::filesystem::is_regular_file(file)) throw CaseError(file.string() + ": no such file");
   try {
@@ -162,6 +174,7 @@ Sweep read_sweep(const std::filesystem::path& file) {
   if (!std::filesystem::is_regular_file(sweep.base)) {
     t.fail("base", "a case file, relative to the sweep file (" + sweep.base.string() + " does not exist)");
   }
+  sweep.base_digest = digest_of_file(sweep.base);
   sweep.output = t.has("output") ? std::filesystem::path(t.string("output"))
                                  : std::filesystem::path("results/sweeps") / file.stem();
 

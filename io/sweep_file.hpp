@@ -21,6 +21,7 @@ struct SweepCase {
 
 struct Sweep {
   std::filesystem::path file, base, output;
+  std::string base_digest;        // of the base case file's text, to tell an edited base case
   std::vector<std::string> keys;  // the varied keys, in column order
   std::vector<SweepCase> cases;   // in run order
 };

@@ -280,6 +280,18 @@ TEST_CASE("a case whose overrides changed since the earlier run is run again") {
   CHECK(contains(read_text(dir.path / "out/cases/001/summary.json"), "\"scheme\": \"MUSL\""));
 }
 
+TEST_CASE("an edited base case runs every case again") {
+  SweepDir dir;
+  dir.sweep("[vary]\n\"analysis.scheme\" = [\"usf\", \"usl\"]\n");
+  REQUIRE(dir.run().status == 0);
+  write_text(dir.path / "base.toml", base_text + "\n# edited\n");
+  const Result r = dir.run();
+  INFO("printed:\n" << r.output);
+  CHECK(r.status == 0);
+  CHECK(!contains(r.output, "skipped,"));
+  CHECK(contains(r.output, "running 2 cases,"));
+}
+
 TEST_CASE("--jobs 2 gives the rows of --jobs 1, but for wall time and rate") {
   SweepDir dir;
   dir.sweep(failing_sweep);
