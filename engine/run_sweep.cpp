@@ -223,8 +223,9 @@ SweepSummary run_sweep(const Sweep& sweep, const SweepOptions& options) {
   }
   summary.completed = summary.skipped;
 
-  const int jobs = static_cast<int>(std::clamp<std::size_t>(static_cast<std::size_t>(std::max(1, options.jobs)), 1,
-                                                            std::max<std::size_t>(1, todo.size())));
+  // No more jobs than cases to run, so that each job gets its share of threads.
+  const int jobs = static_cast<int>(
+      std::min(static_cast<std::size_t>(std::max(1, options.jobs)), std::max<std::size_t>(1, todo.size())));
   const int threads = std::max(1, options.threads / jobs);
   log->info("sweep: {} case{} of {} from {}, output in {}", n, n == 1 ? "" : "s", sweep.base.string(),
             sweep.file.string(), sweep.output.string());
