@@ -195,7 +195,7 @@ int main(int argc, char** argv) {
     for (const auto& b : s.bodies) {
       spdlog::info("body '{}' at t = {} s: mean stress xx {:.6g} yy {:.6g} zz {:.6g} Pa, "
                    "mean strain xx {:.6g} yy {:.6g} zz {:.6g}",
-                   b.name, c.end_time(), b.mean_stress[0], b.mean_stress[1], b.mean_stress[2], b.mean_strain[0],
+                   b.name, c.end_time, b.mean_stress[0], b.mean_stress[1], b.mean_stress[2], b.mean_strain[0],
                    b.mean_strain[1], b.mean_strain[2]);
     }
   } catch (const flowmpm::CaseError& e) {

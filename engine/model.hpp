@@ -70,6 +70,7 @@ struct Model {
   double mass_threshold = 0.0;
 
   double t = 0.0, dt = 0.0;  // time at the start of the step, time step (s)
+  double max_speed_sq = 0.0;  // largest |v_p|^2 after the last step (m^2/s^2)
   std::int64_t step = 0;
   std::int64_t sorts = 0;  // particle sorts so far (the first at set-up)
   StepFlags flags;

@@ -1,5 +1,6 @@
 #include "engine/run_case.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -50,8 +51,13 @@ void log_model(const Case& c, const Model<D, Shape>& model, const Wiring& wiring
   }
   if (model.gravity.norm() > 0.0) spdlog::info("gravity: {} m/s^2", model.gravity.norm());
   const StableStep stable = stable_time_step(c);
-  spdlog::info("time: dt = {} s ({:.3g} of the stable limit {:.4g} s), {} steps to t = {} s", c.dt,
-               c.dt / stable.dt, stable.dt, c.steps, c.end_time());
+  if (c.dt_auto) {
+    spdlog::info("time: dt automatic, CFL {} (first step {:.4g} s; the stable limit at rest is {:.4g} s), to t = {} s",
+                 c.cfl, c.dt, stable.dt, c.end_time);
+  } else {
+    spdlog::info("time: dt = {} s ({:.3g} of the stable limit {:.4g} s), {} steps to t = {} s", c.dt,
+                 c.dt / stable.dt, stable.dt, c.steps, c.end_time);
+  }
 }
 
 template <int D, class Shape>
@@ -71,8 +77,8 @@ RunSummary run(const Case& c, const RunOptions& options) {
   summary.threads = options.threads;
   summary.particles = model.particle_count();
   summary.nodes = model.grid.node_count();
-  summary.dt = c.dt;
-  summary.end_time = c.end_time();
+  summary.dt = c.dt_auto ? 0.0 : c.dt;
+  summary.end_time = c.end_time;
   summary.setup_seconds = options.setup_seconds + seconds_since(setup_start);
 
   const auto& dir = c.output.directory;
@@ -85,7 +91,10 @@ RunSummary run(const Case& c, const RunOptions& options) {
     h5.emplace(dir / "results.h5", c.output.fields);
     csv.emplace(dir / "timeseries.csv", body_names);
   }
-  const std::int64_t every = c.output.every > 0 ? c.output.every : std::max<std::int64_t>(1, c.steps / 20);
+  // Without output.every: about 20 output steps over the run.
+  const std::int64_t planned_steps =
+      c.dt_auto ? static_cast<std::int64_t>(std::ceil(c.end_time / c.dt)) : c.steps;
+  const std::int64_t every = c.output.every > 0 ? c.output.every : std::max<std::int64_t>(1, planned_steps / 20);
   auto write_output = [&] {
     const auto t0 = Clock::now();
     if (options.write_results) {
@@ -104,8 +113,8 @@ RunSummary run(const Case& c, const RunOptions& options) {
   };
   if (!c.reference.type.empty()) {
     reference.emplace(c.reference);
-    reference->initialise(model, c.end_time());
-    if (c.reference.samples > 0) sample_every = std::max<std::int64_t>(1, c.steps / c.reference.samples);
+    reference->initialise(model, c.end_time);
+    if (c.reference.samples > 0) sample_every = std::max<std::int64_t>(1, planned_steps / c.reference.samples);
     sample_reference();
     spdlog::info("reference: {} (errors sampled every {} step{})", c.reference.type, sample_every,
                  sample_every == 1 ? "" : "s");
@@ -124,38 +133,81 @@ RunSummary run(const Case& c, const RunOptions& options) {
       summary.bodies.push_back({c.bodies[i].name, final_state.bodies[i].stress, final_state.bodies[i].strain});
     }
     if (reference) summary.errors = reference->errors();
+    summary.energy_final = final_state.kinetic_energy + final_state.strain_energy;
     if (options.write_results) write_summary(dir / "summary.json", summary);
   };
 
+  // Blow-up guard: the state is kept every guard_every steps so that the
+  // last one that passed can be written when the run breaks down.
+  ParticleSnapshot last_good;
+  std::int64_t last_written = -1;
+  const StableStep stable = stable_time_step(c);
+  const double c_max = model.grid.h.minCoeff() / stable.dt;  // fastest wave speed
+  const double speed_limit = c.guard_speed_factor * c_max;
+  auto check_guard = [&] {
+    if (model.max_speed_sq <= speed_limit * speed_limit) return;
+    throw SimulationError(fmt::format("blow-up at step {} (t = {:.6g} s): {}, more than {:g} times the fastest "
+                                      "wave speed, {:.4g} m/s (analysis.guard_speed_factor)",
+                                      model.step, model.t, sim.fastest_particle(), c.guard_speed_factor, c_max));
+  };
+  auto write_last_good = [&] {
+    if (!options.write_results || last_good.count == 0 || last_good.step <= last_written) return std::string();
+    h5->write(last_good);
+    write_xdmf(dir / "results.xdmf", "results.h5", *h5);
+    return fmt::format("; the last good state (step {}, t = {:.6g} s) is the last step in results.h5",
+                       last_good.step, last_good.time);
+  };
+  auto done = [&] { return c.dt_auto ? model.t >= c.end_time * (1.0 - 1e-12) : model.step >= c.steps; };
+  auto next_dt = [&] {
+    if (!c.dt_auto) return c.dt;
+    // CFL condition with the particles' own speed added to the wave speed.
+    const double dt = c.cfl * model.grid.h.minCoeff() / (c_max + std::sqrt(model.max_speed_sq));
+    return std::min(dt, c.end_time - model.t);
+  };
+  const TimeseriesRow initial = sim.diagnostics(c.bodies.size());
+  summary.energy_initial = initial.kinetic_energy + initial.strain_energy;
+  sim.measure_speed();
+
   write_output();
+  last_written = model.step;
   auto last_progress = Clock::now();
   const auto loop_start = Clock::now();
   try {
-    while (model.step < c.steps) {
+    while (!done()) {
       if (options.interrupt && options.interrupt->load()) {
         write_output();
         finish("interrupted at step " + std::to_string(model.step));
         throw SimulationError("interrupted at step " + std::to_string(model.step) + " (t = " +
                               std::to_string(model.t) + " s); results up to this step are written");
       }
+      if (c.guard_every > 0 && model.step % c.guard_every == 0) sim.snapshot_into(last_good);
+      model.dt = next_dt();
       const auto t0 = Clock::now();
       sim.advance();
       summary.step_loop_seconds += seconds_since(t0);
-      if (reference && (model.step % sample_every == 0 || model.step == c.steps)) sample_reference();
-      if (model.step % every == 0 || model.step == c.steps) write_output();
+      check_guard();
+      const bool last = done();
+      if (reference && (model.step % sample_every == 0 || last)) sample_reference();
+      if (model.step % every == 0 || last) {
+        write_output();
+        last_written = model.step;
+      }
       if (seconds_since(last_progress) >= options.progress_seconds) {
         last_progress = Clock::now();
         const double rate = static_cast<double>(summary.particles) * static_cast<double>(model.step) /
                             summary.step_loop_seconds;
-        const double eta = seconds_since(loop_start) / static_cast<double>(model.step) *
-                           static_cast<double>(c.steps - model.step);
-        spdlog::info("step {}/{} ({:.0f}%), t = {:.6g} s, {:.3g} particle-steps/s, ETA {:.0f} s", model.step,
-                     c.steps, 100.0 * static_cast<double>(model.step) / static_cast<double>(c.steps), model.t,
-                     rate, eta);
+        const double fraction = model.t / c.end_time;
+        const double eta = seconds_since(loop_start) * (1.0 - fraction) / fraction;
+        spdlog::info("step {} ({:.0f}%), t = {:.6g} s, dt = {:.3g} s, {:.3g} particle-steps/s, ETA {:.0f} s",
+                     model.step, 100.0 * fraction, model.t, model.dt, rate, eta);
       }
     }
   } catch (const SimulationError& e) {
-    if (summary.status == "completed") finish(std::string("failed: ") + e.what());
+    if (summary.status == "completed") {
+      const std::string message = e.what() + write_last_good();
+      finish("failed: " + message);
+      throw SimulationError(message);
+    }
     throw;
   }
   finish("completed");

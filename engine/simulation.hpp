@@ -2,6 +2,7 @@
 // case's scheme, and what the time loop and the writers read off it.
 #pragma once
 #include <functional>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -26,7 +27,8 @@ class Simulation {
  public:
   // `observer`, if given, is called as each stage starts (from any thread).
   explicit Simulation(const Case& c, std::function<void(Stage)> observer = {})
-      : observer_(std::move(observer)),
+      : fixed_dt_(c.dt_auto ? 0.0 : c.dt),
+        observer_(std::move(observer)),
         graph_(wiring_of(c.scheme), [this](Stage s) { run_stage(s); }) {
     build_model(c, model_);
   }
@@ -41,6 +43,19 @@ class Simulation {
 
   ParticleSnapshot snapshot() const {
     ParticleSnapshot s;
+    snapshot_into(s);
+    return s;
+  }
+
+  // Fills `s`, reusing its storage.
+  void snapshot_into(ParticleSnapshot& s) const {
+    s.position.clear();
+    s.velocity.clear();
+    s.stress.clear();
+    s.strain.clear();
+    s.volume.clear();
+    s.mass.clear();
+    s.material.clear();
     s.step = model_.step;
     s.time = model_.t;
     s.count = model_.particle_count();
@@ -57,7 +72,31 @@ class Simulation {
         s.material.push_back(b.material);
       }
     }
-    return s;
+  }
+
+  // Sets the model's largest particle speed (it is measured during each
+  // step; this measures it outside one, e.g. at the start).
+  void measure_speed() {
+    model_.max_speed_sq = 0.0;
+    for (const auto& b : model_.batches)
+      for (const auto& v : b.v) model_.max_speed_sq = std::max(model_.max_speed_sq, v.squaredNorm());
+  }
+
+  // Where the fastest particle is and how fast it moves, for messages.
+  std::string fastest_particle() const {
+    double best = -1.0;
+    Vec<D> x = Vec<D>::Zero();
+    for (const auto& b : model_.batches) {
+      for (std::size_t p = 0; p < b.size(); ++p) {
+        if (!(b.v[p].squaredNorm() <= best)) best = b.v[p].squaredNorm(), x = b.x[p];
+      }
+    }
+    std::ostringstream s;
+    s.precision(6);
+    s << "a particle at (";
+    for (int d = 0; d < D; ++d) s << (d ? ", " : "") << x[d];
+    s << ") m moves at " << std::sqrt(best) << " m/s";
+    return s.str();
   }
 
   // Energies and volume-weighted mean stress and strain per body.
@@ -109,13 +148,19 @@ class Simulation {
     if (model_.flags.resort_needed) sort_particles(model_);
     run_step();
     if (model_.flags.failed) {
-      throw SimulationError("step " + std::to_string(model_.step + 1) + " (t = " +
-                            std::to_string(model_.t) + " s): " + model_.flags.problem);
+      std::ostringstream s;
+      s.precision(6);
+      s << "step " << model_.step + 1 << " (t = " << model_.t << " s to " << model_.t + model_.dt
+        << " s): " << model_.flags.problem;
+      throw SimulationError(s.str());
     }
-    model_.t = static_cast<double>(++model_.step) * model_.dt;
+    ++model_.step;
+    // A fixed step keeps t an exact multiple of dt; an automatic one adds up.
+    model_.t = fixed_dt_ > 0.0 ? static_cast<double>(model_.step) * fixed_dt_ : model_.t + model_.dt;
   }
 
   Model<D, Shape> model_;
+  double fixed_dt_;  // 0 with an automatic time step
   std::function<void(Stage)> observer_;
   StepGraph graph_;
 };

@@ -141,22 +141,38 @@ void read_analysis(TableReader t, Case& c) {
     c.flip_fraction = c.velocity_update == "flip" ? 1.0 : 0.0;
     if (t.has("flip_fraction")) t.fail("flip_fraction", "no flip_fraction unless velocity_update = \"blend\"");
   }
-  c.dt = t.number("dt");
-  t.require(c.dt > 0.0, "dt", "a positive time step in s");
-  if (t.has("steps") == t.has("end_time")) {
-    t.fail_table("give exactly one of analysis.steps and analysis.end_time");
-  }
-  if (t.has("steps")) {
-    c.steps = t.integer("steps");
-    t.require(c.steps >= 1, "steps", "a positive number of steps");
+  if (t.has("dt") && t.node("dt")->is_string()) {
+    t.require(t.string("dt") == "auto", "dt", "a time step in s, or \"auto\"");
+    c.dt_auto = true;
+    c.cfl = t.number_or("cfl", 0.5);
+    t.require(c.cfl > 0.0 && c.cfl <= 1.0, "cfl", "a CFL number in (0, 1]");
+    c.end_time = t.number("end_time");
+    t.require(c.end_time > 0.0, "end_time", "a positive end time in s");
+    if (t.has("steps")) t.fail("steps", "no steps with dt = \"auto\" (give end_time)");
   } else {
-    const double end_time = t.number("end_time");
-    t.require(end_time > 0.0, "end_time", "a positive end time in s");
-    const double steps = std::round(end_time / c.dt);
-    t.require(steps >= 1.0 && std::abs(steps * c.dt - end_time) <= 1e-9 * end_time, "end_time",
-              "a whole number of time steps (end_time / dt = " + fmt(end_time / c.dt) + ")");
-    c.steps = static_cast<std::int64_t>(steps);
+    c.dt = t.number("dt");
+    t.require(c.dt > 0.0, "dt", "a positive time step in s, or \"auto\"");
+    if (t.has("cfl")) t.fail("cfl", "no cfl unless dt = \"auto\"");
+    if (t.has("steps") == t.has("end_time")) {
+      t.fail_table("give exactly one of analysis.steps and analysis.end_time");
+    }
+    if (t.has("steps")) {
+      c.steps = t.integer("steps");
+      t.require(c.steps >= 1, "steps", "a positive number of steps");
+    } else {
+      const double end_time = t.number("end_time");
+      t.require(end_time > 0.0, "end_time", "a positive end time in s");
+      const double steps = std::round(end_time / c.dt);
+      t.require(steps >= 1.0 && std::abs(steps * c.dt - end_time) <= 1e-9 * end_time, "end_time",
+                "a whole number of time steps (end_time / dt = " + fmt(end_time / c.dt) + ")");
+      c.steps = static_cast<std::int64_t>(steps);
+    }
+    c.end_time = c.dt * static_cast<double>(c.steps);
   }
+  c.guard_speed_factor = t.number_or("guard_speed_factor", 10.0);
+  t.require(c.guard_speed_factor > 1.0, "guard_speed_factor", "a factor > 1 on the fastest wave speed");
+  c.guard_every = t.integer_or("guard_every", 10);
+  t.require(c.guard_every >= 0, "guard_every", "a number of steps >= 0 (0: keep no last good state)");
   c.gravity = vector_of(t, "gravity", c.dimension);
   t.reject_unknown_keys();
 }
@@ -403,6 +419,7 @@ Case read_case(const std::filesystem::path& file, const std::vector<std::string>
   // The explicit step is stable only below the time a P wave takes to cross
   // the smallest cell (CFL number 1).
   const StableStep stable = stable_time_step(c);
+  if (c.dt_auto) c.dt = c.cfl * stable.dt;  // the first step's, particles at rest
   if (c.dt > stable.dt) {
     TableReader analysis = t.table("analysis");
     analysis.fail("dt", "a time step no larger than the stable limit h/c = " + fmt(stable.dt) +

@@ -75,9 +75,17 @@ struct Case {
   bool plane_stress = false;              // 2D: plane stress instead of plane strain
   std::string velocity_update = "flip";
   double flip_fraction = 1.0;  // 1: FLIP, 0: PIC
-  double dt = 0.0;             // s
-  std::int64_t steps = 0;
-  double end_time() const { return dt * static_cast<double>(steps); }
+  double dt = 0.0;             // s; with dt_auto, the first step's
+  bool dt_auto = false;        // dt = cfl h_min / (c_max + |v|_max), every step
+  double cfl = 0.5;            // with dt_auto
+  std::int64_t steps = 0;      // 0 with dt_auto: run until end_time
+  double end_time = 0.0;       // s
+  // Blow-up guard: a particle faster than guard_speed_factor times the
+  // fastest wave speed, or a non-finite value, stops the run; the state is
+  // kept every guard_every steps (0: never) so that the last good one can
+  // be written.
+  double guard_speed_factor = 10.0;
+  std::int64_t guard_every = 10;
   Vec3 gravity{};              // m/s^2
   GridSpec grid;
   std::vector<NamedMaterial> materials;

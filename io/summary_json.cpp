@@ -1,5 +1,7 @@
 #include "io/summary_json.hpp"
 
+#include <limits>
+
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -77,6 +79,10 @@ std::string summary_json(const RunSummary& s) {
   field("output_seconds", number(s.output_seconds));
   field("reference_seconds", number(s.reference_seconds));
   field("particle_steps_per_second", number(s.particle_steps_per_second));
+  field("energy_initial", number(s.energy_initial));
+  field("energy_final", number(s.energy_final));
+  field("energy_drift", number(s.energy_initial > 0.0 ? (s.energy_final - s.energy_initial) / s.energy_initial
+                                                      : std::numeric_limits<double>::quiet_NaN()));
 
   out += "  \"bodies\": [";
   for (std::size_t i = 0; i < s.bodies.size(); ++i) {

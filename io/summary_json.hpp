@@ -23,12 +23,15 @@ struct RunSummary {
   int threads = 1;
   std::size_t particles = 0, nodes = 0;
   std::int64_t steps = 0;
-  double dt = 0.0, end_time = 0.0;       // s
+  double dt = 0.0, end_time = 0.0;       // s; dt 0 when automatic
   double setup_seconds = 0.0;            // case read, particles generated and sorted
   double step_loop_seconds = 0.0;        // wall time of the step loop, output excluded
   double output_seconds = 0.0;           // wall time spent writing results
   double reference_seconds = 0.0;        // wall time spent measuring errors
   double particle_steps_per_second = 0.0;
+  // Kinetic plus strain energy (J) at the start and the end; their relative
+  // change is the energy drift where no external work is done.
+  double energy_initial = 0.0, energy_final = 0.0;
   std::vector<BodySummary> bodies;
   // Error norms against a reference solution, by name (empty without one).
   std::map<std::string, double> errors;

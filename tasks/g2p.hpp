@@ -7,6 +7,8 @@
 // Stages after g2p_motion in the same step (USL stress, MUSL remap)
 // evaluate N and dN at the updated positions.
 #pragma once
+#include <atomic>
+#include <cmath>
 #include <sstream>
 
 #include "engine/particle_sort.hpp"
@@ -48,9 +50,13 @@ void g2p_motion(Model<D, Shape>& model) {
   using Layout = BlockLayout<D, Shape>;
   const auto& grid = model.grid;
   const double a = model.flip_fraction, dt = model.dt;
+  // Largest particle speed of the step, for the time step and the guard:
+  // per block, then combined (max is exact, so any order gives the same).
+  std::atomic<double> max_speed_sq{0.0};
   gather_by_block(model, [&](ParticleBatch<D>& b, std::uint32_t first, std::uint32_t last,
                              std::uint32_t block) {
     const Index<D> bc = model.blocks.block_coords(block);
+    double block_max_sq = 0.0;
     const Vec<D>* velocity = grid.velocity.data();
     const Vec<D>* velocity_change = grid.velocity_change.data();
     for (std::uint32_t p = first; p < last; ++p) {
@@ -73,18 +79,26 @@ void g2p_motion(Model<D, Shape>& model) {
         const int c_old = floor_to_int((b.x[p][d] - grid.origin[d]) * grid.inv_h[d]);
         one_cell = one_cell && std::abs(c_new[d] - c_old) <= 1;
       }
-      if (!inside || !one_cell) {
+      const Vec<D> v_new = a * (b.v[p] + dv) + (1.0 - a) * v_grid;
+      if (!inside || !one_cell || !v_new.allFinite()) {
         model.flags.fail(detail::describe_particle<D>(b.x[p], x_new) +
-                         (!inside ? ", outside the grid" : ", more than one cell in one step"));
+                         (!v_new.allFinite() ? ", its velocity not finite"
+                          : !inside          ? ", outside the grid"
+                                             : ", more than one cell in one step"));
         continue;
       }
-      b.v[p] = a * (b.v[p] + dv) + (1.0 - a) * v_grid;
+      b.v[p] = v_new;
       b.x[p] = x_new;
+      block_max_sq = std::max(block_max_sq, v_new.squaredNorm());
       if (detail::drift_from_block<D, Shape>(c_new, bc) >= Layout::drift_limit) {
         model.flags.resort_needed.store(true, std::memory_order_relaxed);
       }
     }
+    double seen = max_speed_sq.load(std::memory_order_relaxed);
+    while (block_max_sq > seen && !max_speed_sq.compare_exchange_weak(seen, block_max_sq)) {
+    }
   });
+  model.max_speed_sq = max_speed_sq.load();
 }
 
 template <int D, class Shape, StressState S, class MaterialModel>
@@ -115,6 +129,12 @@ void update_stress(Model<D, Shape>& model, ParticleBatch<D>& b, const MaterialMo
         for (int j = 0; j < D; ++j) input.dL(i, j) = L[i][j] * dt;
       auto& state = states.empty() ? no_state : states[p];
       material.template update<S>(state, b.stress[p], deps, input);
+      if (!std::isfinite(b.stress[p][0] + b.stress[p][1] + b.stress[p][2] + b.stress[p][3] + b.stress[p][4] +
+                         b.stress[p][5])) {
+        std::ostringstream where;
+        where << "a particle at (" << b.x[p].transpose() << ") m: its stress is not finite";
+        model.flags.fail(where.str());
+      }
       for (int i = 0; i < 6; ++i) b.strain[p][i] += deps[i];
       b.volume[p] *= 1.0 + deps[0] + deps[1] + deps[2];
     }

@@ -127,7 +127,7 @@ TEST_CASE("a bad case file is rejected with one clear message and nothing is wri
   }
   SUBCASE("a value of the wrong type") {
     const int line = c.replace("dt = ", "dt = \"fast\"");
-    expect_rejected(dir, c.text(), line, {"analysis.dt", "a number", "fast"});
+    expect_rejected(dir, c.text(), line, {"analysis.dt", "a time step in s, or \"auto\"", "fast"});
   }
   SUBCASE("a missing required key") {
     c.remove("youngs_modulus = ");
