@@ -19,12 +19,16 @@
 #include <vector>
 
 #include "materials/linear_elastic.hpp"
+#include "materials/orthotropic.hpp"
+#include "materials/strain_softening.hpp"
+#include "materials/transversely_isotropic.hpp"
+#include "materials/von_mises.hpp"
 
 namespace flowmpm {
 
 class TableReader;
 
-using Material = std::variant<LinearElastic>;
+using Material = std::variant<LinearElastic, Orthotropic, TransverselyIsotropic, VonMises, StrainSoftening>;
 
 // The internal variables of every particle of a batch, one array per model.
 template <class Model>

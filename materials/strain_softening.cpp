@@ -1,0 +1,55 @@
+#include "materials/strain_softening.hpp"
+
+#include <sstream>
+
+#include "io/case_reader.hpp"
+
+namespace flowmpm {
+
+StrainSoftening StrainSoftening::read(TableReader& t) {
+  Parameters p;
+  p.density = t.number("density");
+  t.require(p.density > 0.0, "density", "a positive density in kg/m^3");
+  p.youngs_modulus = t.number("youngs_modulus");
+  t.require(p.youngs_modulus > 0.0, "youngs_modulus", "a positive Young's modulus in Pa");
+  p.poisson_ratio = t.number("poisson_ratio");
+  t.require(p.poisson_ratio > -1.0 && p.poisson_ratio < 0.5, "poisson_ratio", "a Poisson ratio in (-1, 0.5)");
+  p.initiation_strain = t.number("initiation_strain");
+  t.require(p.initiation_strain > 0.0, "initiation_strain", "a positive damage initiation strain eps_i");
+  if (t.has("failure_strain") == t.has("fracture_energy")) {
+    t.fail_table("give exactly one of failure_strain (eps_f, the same for every particle) and "
+                 "fracture_energy (G_c in J/m^2, eps_f = 2 G_c / (E eps_i h) per particle size h)");
+  }
+  if (t.has("failure_strain")) {
+    p.failure_strain = t.number("failure_strain");
+    t.require(*p.failure_strain > p.initiation_strain, "failure_strain",
+              "a failure strain eps_f above initiation_strain");
+  } else {
+    p.fracture_energy = t.number("fracture_energy");
+    t.require(*p.fracture_energy > 0.0, "fracture_energy", "a positive fracture energy G_c in J/m^2");
+  }
+  return StrainSoftening(p);
+}
+
+StrainSoftening::State StrainSoftening::initial_state(const ParticleInit& init) const {
+  State s;
+  if (parameters.failure_strain) {
+    s.eps_f = *parameters.failure_strain;
+    return s;
+  }
+  const double E = parameters.youngs_modulus, eps_i = parameters.initiation_strain;
+  const double G_c = *parameters.fracture_energy;
+  s.eps_f = init.length > 0.0 ? 2.0 * G_c / (E * eps_i * init.length) : 0.0;
+  if (!(s.eps_f > eps_i)) {
+    std::ostringstream m;
+    m.precision(6);
+    m << "strain_softening: particles of size h = " << init.length << " m are too large for the crack band of "
+      << "fracture_energy = " << G_c << " J/m^2: eps_f = 2 G_c / (E eps_i h) = " << s.eps_f
+      << " is not above initiation_strain = " << eps_i << " (the band would snap back); use particles "
+      << "smaller than 2 G_c / (E eps_i^2) = " << 2.0 * G_c / (E * eps_i * eps_i) << " m";
+    throw CaseError(m.str());
+  }
+  return s;
+}
+
+}  // namespace flowmpm
