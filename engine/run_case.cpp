@@ -151,7 +151,10 @@ RunSummary run(const Case& c, const RunOptions& options) {
                                       model.step, model.t, sim.fastest_particle(), c.guard_speed_factor, c_max));
   };
   auto write_last_good = [&] {
-    if (!options.write_results || last_good.count == 0 || last_good.step <= last_written) return std::string();
+    if (!options.write_results) return std::string();
+    if (last_good.count == 0 || last_good.step <= last_written) {
+      return fmt::format("; the last good state written is step {} in results.h5", last_written);
+    }
     h5->write(last_good);
     write_xdmf(dir / "results.xdmf", "results.h5", *h5);
     return fmt::format("; the last good state (step {}, t = {:.6g} s) is the last step in results.h5",
