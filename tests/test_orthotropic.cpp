@@ -17,9 +17,12 @@
 //    sampled directions.
 //  - Whole cases (explicit dynamics loaded smoothly, triangular velocity
 //    pulse): the dynamic residue is about 4 / (omega T)^2 of the static
-//    strain, 1e-4 here (measured 1.6e-4 on the modulus, 3e-6 on the
-//    thermal stress): modulus and thermal stress and strains within 0.1 %,
-//    stresses that should vanish below 0.1 % of the one that does not.
+//    strain, 1e-4 here; the off-axis blocks shear and their axes turn with
+//    them, which moves the apparent modulus by about eps d ln E / d phi,
+//    1e-4 at the strain of 1e-4 used (measured: 1.3e-4 lamina, poplar
+//    below 1e-4; 3e-6 on the thermal stress): moduli, thermal stress and
+//    strains within 0.1 %, stresses that should vanish below 0.1 % of the
+//    one that does not.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -421,18 +424,18 @@ BodyMeans run(const Case& c) {
 TEST_CASE("whole case: off-axis tension of a poplar strand block, apparent modulus") {
   // configs/materials/orthotropic_poplar_offaxis.toml: one 10 mm cell, 8
   // particles, L axis at 30 degrees from x about z, pulled along y to
-  // eps_yy = 1e-3; uniaxial stress, so sigma_yy / eps_yy = 1 / S'_22(30 deg)
+  // eps_yy = 1e-4; uniaxial stress, so sigma_yy / eps_yy = 1 / S'_22(30 deg)
   // = E at 60 degrees from L.
   const Case c = read_case(testing::config("materials/orthotropic_poplar_offaxis.toml"));
   const BodyMeans b = run<3>(c);
   const double expected = 1 / off_axis_compliance(1 / EL, 1 / ER, -nuLR / EL, 1 / GLR, 60 * pi / 180);
-  CHECK(b.strain[1] == doctest::Approx(1e-3).epsilon(1e-9));
+  CHECK(b.strain[1] == doctest::Approx(1e-4).epsilon(1e-9));
   MESSAGE("off-axis block: sigma_yy / eps_yy = " << b.stress[1] / b.strain[1] << " Pa, analytical " << expected
           << " Pa; sigma_xx = " << b.stress[0] << " Pa, eps_xy = " << b.strain[5]);
   CHECK(b.stress[1] / b.strain[1] == doctest::Approx(expected).epsilon(1e-3));
   CHECK(std::abs(b.stress[0]) < 1e-3 * b.stress[1]);
   // The off-axis block shears: eps_xy has the sign of S'_26 (nonzero).
-  CHECK(std::abs(b.strain[5]) > 1e-4);
+  CHECK(std::abs(b.strain[5]) > 1e-5);
 }
 
 TEST_CASE("whole case: a free block heated in plane strain") {
@@ -451,4 +454,19 @@ TEST_CASE("whole case: a free block heated in plane strain") {
   CHECK(std::abs(b.stress[1]) < 1e-3 * ET * az * dT);
   CHECK(b.strain[0] == doctest::Approx((ax + nuLT * ET / EL * az) * dT).epsilon(1e-3));
   CHECK(b.strain[1] == doctest::Approx((ay + nuRT * ET / ER * az) * dT).epsilon(1e-3));
+}
+
+TEST_CASE("whole case: off-axis tension of a transversely isotropic lamina in plane stress") {
+  // configs/materials/transversely_isotropic_lamina.toml: fibres (axis "y")
+  // at 30 degrees from the load along y, one 10 mm cell, 4 particles.
+  const Case c = read_case(testing::config("materials/transversely_isotropic_lamina.toml"));
+  const BodyMeans b = run<2>(c);
+  const double EA = 181e9, ET_ = 10.3e9, GA = 7.17e9, nuAT = 0.28;
+  const double expected = 1 / off_axis_compliance(1 / EA, 1 / ET_, -nuAT / EA, 1 / GA, 30 * pi / 180);
+  MESSAGE("lamina: sigma_yy / eps_yy = " << b.stress[1] / b.strain[1] << " Pa, analytical " << expected
+          << " Pa; sigma_xx = " << b.stress[0] << " Pa, sigma_zz = " << b.stress[2] << " Pa");
+  CHECK(b.strain[1] == doctest::Approx(1e-4).epsilon(1e-9));
+  CHECK(b.stress[1] / b.strain[1] == doctest::Approx(expected).epsilon(1e-3));
+  CHECK(std::abs(b.stress[0]) < 1e-3 * b.stress[1]);
+  CHECK(b.stress[2] == 0.0);
 }

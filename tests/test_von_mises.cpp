@@ -19,7 +19,8 @@
 //    is of the order (T / t_ramp)^2 = 1e-2 of the ramp's dynamic stress
 //    rho c v = 1.4 MPa, 1e-4 of sigma_0 (measured 7e-5 on the yield strain);
 //    one step loads 1.4e-4 of the yield strain: yield load, yield strain and
-//    the hardening slope within 0.1 %.
+//    the hardening slope within 0.1 %. The same for the 2D plate (16
+//    particles, plane stress and plane strain; measured 3e-5 and 2e-4).
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -297,4 +298,38 @@ TEST_CASE("whole case: a bar pulled in uniaxial stress yields at sigma_0 and har
   CHECK(end.stress[0] == doctest::Approx(sigma0 + H * eps_p).epsilon(1e-3));
   // The hardening part alone, E H / (E + H) eps_y = 2.475 MPa, within 1 %.
   CHECK(end.stress[0] - sigma0 == doctest::Approx(E * H / (E + H) * (end.strain[0] - eps_y)).epsilon(1e-2));
+}
+
+TEST_CASE("whole case: a plate pulled in plane stress yields at sigma_0, in plane strain at sigma_0 / sqrt(1 - nu + nu^2)") {
+  // configs/materials/von_mises_plate.toml: 10 mm square, 16 particles,
+  // pulled in y to twice the yield strain, x free.
+  for (const std::string state : {"plane_stress", "plane_strain"}) {
+    CAPTURE(state);
+    const Case c = read_case(testing::config("materials/von_mises_plate.toml"),
+                             {"analysis.stress_state=\"" + state + "\""});
+    Simulation<2, LinearShape> sim(c);
+    double yield_stress = -1.0;
+    for (std::int64_t s = 0; s < c.steps; ++s) {
+      sim.advance();
+      if (yield_stress >= 0.0) continue;
+      for (const auto& st : std::get<StateArray<VonMises>>(sim.model().batches[0].states)) {
+        if (st.eps_p > 0.0) {
+          yield_stress = sim.diagnostics(1).bodies[0].stress[1];
+          break;
+        }
+      }
+    }
+    const BodyMeans end = sim.diagnostics(1).bodies[0];
+    const bool plane_stress = state == "plane_stress";
+    const double expected = plane_stress ? sigma0 : sigma0 / std::sqrt(1 - nu + nu * nu);
+    MESSAGE(state << " plate: first yield at mean sigma_yy = " << yield_stress << " Pa (analytical " << expected
+            << "); end: eps_yy = " << end.strain[1] << ", sigma_yy = " << end.stress[1] << " Pa, sigma_xx = "
+            << end.stress[0] << " Pa, sigma_zz = " << end.stress[2] << " Pa");
+    CHECK(yield_stress == doctest::Approx(expected).epsilon(1e-3));
+    CHECK(std::abs(end.stress[0]) < 1e-3 * sigma0);
+    if (plane_stress) {
+      CHECK(end.stress[2] == 0.0);
+      CHECK(end.stress[1] == doctest::Approx(sigma0 + E * H / (E + H) * (end.strain[1] - eps_y)).epsilon(1e-3));
+    }
+  }
 }
