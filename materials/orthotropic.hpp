@@ -72,8 +72,8 @@ struct Orthotropic {
   // Reads and validates [materials.NAME] (type = "orthotropic").
   static Orthotropic read(TableReader& table);
   // Reads `alpha` with `temperature_change` and `beta` with `concentration`
-  // (each pair both or neither): `count` values per array, value k applying
-  // to the material axes whose entry of `source` is k.
+  // (each pair both or neither): arrays of `count` values, of which
+  // material axis i takes value source[i].
   static void read_expansion(TableReader& t, Parameters& p, std::size_t count,
                              const std::array<int, 3>& source);
 

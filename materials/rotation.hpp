@@ -7,7 +7,7 @@
 // a = R a_m R^T globally. Rotation rate: the spin W = skew(L); over a step
 // the increment W dt = skew(dL) is integrated with the Cayley map
 // dR = (I - W dt / 2)^-1 (I + W dt / 2) (Hughes and Winget 1980), which is
-// orthogonal for any dt and exact to second order. As a quaternion,
+// orthogonal for any dt and second-order accurate. As a quaternion,
 // dR = (1, w / 2) / |(1, w / 2)|, w the axial vector of W dt.
 #pragma once
 #include <array>
