@@ -102,24 +102,30 @@ void build_model(const Case& c, Model<D, Shape>& model) {
     batch.strain.assign(n, Voigt{});
     batch.particle_length = std::pow(volume, 1.0 / D);
     for (int d = 0; d < D; ++d) batch.half_width[d] = 0.5 * body.spacing[d] * model.grid.inv_h[d];
-    batch.states = std::visit(
-        [&](const auto& material) -> MaterialStates {
-          using M = std::decay_t<decltype(material)>;
-          // Models without internal variables store nothing per particle.
-          StateArray<M> states;
-          if constexpr (!std::is_empty_v<typename M::State>) {
-            states.reserve(n);
-            ParticleInit init;
-            init.axes_degrees = body.material_axes;
-            init.length = batch.particle_length;
-            for (const Vec<D>& x : batch.x) {
-              for (int d = 0; d < D; ++d) init.position[d] = x[d];
-              states.push_back(material.initial_state(init));
-            }
-          }
-          return states;
-        },
-        model.materials[body.material]);
+    // A model may reject its parameters for this body's particles (e.g. a
+    // crack band wider than the fracture energy allows): name the body.
+    auto initial_states = [&](const auto& material) -> MaterialStates {
+      using M = std::decay_t<decltype(material)>;
+      // Models without internal variables store nothing per particle.
+      StateArray<M> states;
+      if constexpr (!std::is_empty_v<typename M::State>) {
+        states.reserve(n);
+        ParticleInit init;
+        init.axes_degrees = body.material_axes;
+        init.length = batch.particle_length;
+        for (const Vec<D>& x : batch.x) {
+          for (int d = 0; d < D; ++d) init.position[d] = x[d];
+          states.push_back(material.initial_state(init));
+        }
+      }
+      return states;
+    };
+    try {
+      batch.states = std::visit(initial_states, model.materials[body.material]);
+    } catch (const CaseError& e) {
+      throw CaseError(c.file.string() + ": bodies \"" + body.name + "\" (material \"" +
+                      c.materials[body.material].name + "\"): " + e.what());
+    }
     lightest = std::min(lightest, rho * volume);
     model.batches.push_back(std::move(batch));
   }
