@@ -30,12 +30,7 @@ std::vector<std::pair<std::size_t, std::size_t>> ghost_mirror_pairs(const Model<
   if (below > 0 && above > 0) return pairs;  // inside the material: no ghosts
   const int outward = below == 0 ? -1 : 1;
   for (std::size_t n = 0; n < g.node_count(); ++n) {
-    Index<D> i;
-    std::size_t rest = n;
-    for (int d = 0; d < D; ++d) {
-      i[d] = static_cast<int>(rest % g.nodes[d]);
-      rest /= g.nodes[d];
-    }
+    const Index<D> i = g.node_ijk(n);
     if (i[a] != k0) continue;
     for (int j = 1; j <= Shape::reach_below; ++j) {
       Index<D> ghost = i, mirror = i;
@@ -137,13 +132,7 @@ void build_model(const Case& c, Model<D, Shape>& model) {
     std::vector<std::size_t> nodes;
     const auto& g = model.grid;
     for (std::size_t n = 0; n < g.node_count(); ++n) {
-      Index<D> i;
-      std::size_t rest = n;
-      for (int d = 0; d < D; ++d) {
-        i[d] = static_cast<int>(rest % g.nodes[d]);
-        rest /= g.nodes[d];
-      }
-      const Vec<D> x = g.node_position(i);
+      const Vec<D> x = g.node_position(g.node_ijk(n));
       bool selected = true;
       for (int d = 0; d < D; ++d) {
         const double tol = 1e-6 * g.h[d];

@@ -53,6 +53,16 @@ struct Grid {
     return index;
   }
 
+  // Inverse of node_index.
+  Index<D> node_ijk(std::size_t n) const {
+    Index<D> i;
+    for (int d = 0; d < D; ++d) {
+      i[d] = static_cast<int>(n % static_cast<std::size_t>(nodes[d]));
+      n /= static_cast<std::size_t>(nodes[d]);
+    }
+    return i;
+  }
+
   Vec<D> node_position(const Index<D>& i) const {
     Vec<D> x;
     for (int d = 0; d < D; ++d) x[d] = origin[d] + i[d] * h[d];

@@ -102,26 +102,6 @@ Vec3 per_axis(TableReader& t, std::string_view key, int dim) {
   return vector_of(t, key, dim);
 }
 
-TimeFunction time_function(TableReader& t, std::string_view key) {
-  const toml::node* n = t.node(key);
-  if (n->is_number()) return TimeFunction{{{0.0, t.number(key)}}};
-  const std::string expected =
-      "a velocity in m/s, or an array of [time, velocity] pairs with increasing times";
-  const toml::array* points = n->as_array();
-  if (!points || points->empty()) t.fail(key, expected);
-  TimeFunction f;
-  for (const toml::node& p : *points) {
-    const toml::array* pair = p.as_array();
-    if (!pair || pair->size() != 2 || !pair->get(0)->is_number() || !pair->get(1)->is_number()) {
-      t.fail(key, expected);
-    }
-    const double time = *pair->get(0)->value<double>();
-    if (!f.points.empty() && time <= f.points.back().first) t.fail(key, expected);
-    f.points.emplace_back(time, *pair->get(1)->value<double>());
-  }
-  return f;
-}
-
 void read_analysis(TableReader t, Case& c) {
   c.dimension = static_cast<int>(t.integer("dimension"));
   t.require(c.dimension >= 1 && c.dimension <= 3, "dimension", "1, 2 or 3");
@@ -277,7 +257,7 @@ void read_node_set(TableReader t, Case& c, std::size_t index) {
   }
   TableReader v = t.table("velocity");
   for (int d = 0; d < c.dimension; ++d) {
-    if (v.has(axis_names[d])) s.velocity[d] = time_function(v, axis_names[d]);
+    if (v.has(axis_names[d])) s.velocity[d] = v.time_function(axis_names[d], "a velocity in m/s");
   }
   v.reject_unknown_keys();
   t.reject_unknown_keys();

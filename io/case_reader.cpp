@@ -165,6 +165,27 @@ std::vector<std::string> TableReader::strings(std::string_view key) {
   return values;
 }
 
+TimeFunction TableReader::time_function(std::string_view key, std::string_view what) {
+  const toml::node& n = required(key);
+  if (n.is_number()) return TimeFunction{{{0.0, number(key)}}};
+  const std::string expected =
+      std::string(what) + ", or an array of [time in s, value] pairs with increasing times";
+  const toml::array* points = n.as_array();
+  if (!points || points->empty()) fail_at(n, key, expected);
+  TimeFunction f;
+  for (const toml::node& p : *points) {
+    const toml::array* pair = p.as_array();
+    if (!pair || pair->size() != 2 || !pair->get(0)->is_number() || !pair->get(1)->is_number()) {
+      fail_at(n, key, expected);
+    }
+    const double time = *pair->get(0)->value<double>(), value = *pair->get(1)->value<double>();
+    if (!std::isfinite(time) || !std::isfinite(value)) fail_at(n, key, expected);
+    if (!f.points.empty() && time <= f.points.back().first) fail_at(n, key, expected);
+    f.points.emplace_back(time, value);
+  }
+  return f;
+}
+
 TableReader TableReader::table(std::string_view key) {
   const toml::node& n = required(key);
   if (!n.is_table()) fail_at(n, key, "a table");

@@ -17,6 +17,8 @@
 
 #include <toml++/toml.h>
 
+#include "engine/time_function.hpp"
+
 namespace flowmpm {
 
 // A problem with the input; what() is the complete message for the user.
@@ -52,6 +54,11 @@ class TableReader {
   // An array of exactly `count` numbers.
   std::vector<double> numbers(std::string_view key, std::size_t count);
   std::vector<std::string> strings(std::string_view key);
+  // A value given as a number, or as a function of time: an array of
+  // [time (s), value] pairs with increasing times, piecewise linear between
+  // them and constant outside. `what` names the quantity and its unit for
+  // messages ("a temperature change in K").
+  TimeFunction time_function(std::string_view key, std::string_view what);
 
   TableReader table(std::string_view key);
   // The tables of an array of tables, e.g. [[bodies]]; empty when absent.

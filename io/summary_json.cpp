@@ -1,12 +1,11 @@
 #include "io/summary_json.hpp"
 
-#include <limits>
-
 #include <charconv>
 #include <cmath>
-#include <cstdio>
+#include <limits>
 
 #include "io/atomic_file.hpp"
+#include "io/quoted_string.hpp"
 
 namespace flowmpm {
 namespace {
@@ -21,29 +20,6 @@ std::string number(double value) {
   return std::string(buffer, result.ptr);
 }
 
-std::string quoted(const std::string& text) {
-  std::string out = "\"";
-  for (const char c : text) {
-    switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\b': out += "\\b"; break;
-      case '\f': out += "\\f"; break;
-      case '\n': out += "\\n"; break;
-      case '\r': out += "\\r"; break;
-      case '\t': out += "\\t"; break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20) {
-          char escape[8];
-          std::snprintf(escape, sizeof escape, "\\u%04x", static_cast<unsigned>(c));
-          out += escape;
-        } else {
-          out += c;
-        }
-    }
-  }
-  return out + "\"";
-}
 
 // {"xx": ..., "yy": ..., "zz": ..., "yz": ..., "xz": ..., "xy": ...}
 std::string voigt(const std::array<double, 6>& values) {
@@ -61,12 +37,12 @@ std::string summary_json(const RunSummary& s) {
   const auto field = [&out](const char* key, const std::string& value) {
     out += std::string("  \"") + key + "\": " + value + ",\n";
   };
-  field("case", quoted(s.case_name));
-  field("case_file", quoted(s.case_file));
-  field("status", quoted(s.status));
-  field("scheme", quoted(s.scheme));
-  field("shape_function", quoted(s.shape_function));
-  field("velocity_update", quoted(s.velocity_update));
+  field("case", quoted_string(s.case_name));
+  field("case_file", quoted_string(s.case_file));
+  field("status", quoted_string(s.status));
+  field("scheme", quoted_string(s.scheme));
+  field("shape_function", quoted_string(s.shape_function));
+  field("velocity_update", quoted_string(s.velocity_update));
   field("dimension", std::to_string(s.dimension));
   field("threads", std::to_string(s.threads));
   field("particles", std::to_string(s.particles));
@@ -89,7 +65,7 @@ std::string summary_json(const RunSummary& s) {
     const BodySummary& body = s.bodies[i];
     out += i == 0 ? "\n" : ",\n";
     out += "    {\n";
-    out += "      \"name\": " + quoted(body.name) + ",\n";
+    out += "      \"name\": " + quoted_string(body.name) + ",\n";
     out += "      \"mean_stress\": " + voigt(body.mean_stress) + ",\n";
     out += "      \"mean_strain\": " + voigt(body.mean_strain) + "\n";
     out += "    }";
@@ -100,7 +76,7 @@ std::string summary_json(const RunSummary& s) {
   bool first = true;
   for (const auto& [name, value] : s.errors) {
     out += first ? "\n" : ",\n";
-    out += "    " + quoted(name) + ": " + number(value);
+    out += "    " + quoted_string(name) + ": " + number(value);
     first = false;
   }
   out += s.errors.empty() ? "}\n" : "\n  }\n";

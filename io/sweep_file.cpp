@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "io/case_reader.hpp"
+#include "io/quoted_string.hpp"
 
 namespace flowmpm {
 namespace {
@@ -18,30 +19,6 @@ namespace {
 // The product expands at most this many cases (each is read up front).
 constexpr std::size_t max_cases = 100000;
 
-// A TOML basic string: "..." with escapes.
-std::string toml_string(std::string_view text) {
-  std::string out = "\"";
-  for (const char c : text) {
-    switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\b': out += "\\b"; break;
-      case '\f': out += "\\f"; break;
-      case '\n': out += "\\n"; break;
-      case '\r': out += "\\r"; break;
-      case '\t': out += "\\t"; break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
-          char escape[8];
-          std::snprintf(escape, sizeof escape, "\\u%04x", static_cast<unsigned>(c));
-          out += escape;
-        } else {
-          out += c;
-        }
-    }
-  }
-  return out + "\"";
-}
 
 // The shortest text that reads back to the same double, kept a TOML float:
 // positional from 1e-4 to 1e16 (0.0004, not 4e-04), scientific outside.
@@ -62,7 +39,7 @@ std::string key_text(std::string_view key) {
   const bool bare = !key.empty() && std::all_of(key.begin(), key.end(), [](char c) {
     return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '-';
   });
-  return bare ? std::string(key) : toml_string(key);
+  return bare ? std::string(key) : quoted_string(key);
 }
 
 // One factor of the product: a [vary] key, or a [[zip]] whose keys advance
@@ -142,7 +119,7 @@ toml::table parse_sweep_file(const std::filesystem::path& file) {
 
 std::string toml_text(const toml::node& value) {
   switch (value.type()) {
-    case toml::node_type::string: return toml_string(*value.value<std::string>());
+    case toml::node_type::string: return quoted_string(*value.value<std::string>());
     case toml::node_type::integer: return std::to_string(*value.value<std::int64_t>());
     case toml::node_type::floating_point: return float_text(*value.value<double>());
     case toml::node_type::boolean: return *value.value<bool>() ? "true" : "false";

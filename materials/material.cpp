@@ -3,18 +3,13 @@
 #include <optional>
 
 #include "io/case_reader.hpp"
+#include "materials/parameter_reading.hpp"
 
 namespace flowmpm {
 
 LinearElastic LinearElastic::read(TableReader& t) {
   Parameters p;
-  p.density = t.number("density");
-  t.require(p.density > 0.0, "density", "a positive density in kg/m^3");
-  p.youngs_modulus = t.number("youngs_modulus");
-  t.require(p.youngs_modulus > 0.0, "youngs_modulus", "a positive Young's modulus in Pa");
-  p.poisson_ratio = t.number("poisson_ratio");
-  t.require(p.poisson_ratio > -1.0 && p.poisson_ratio < 0.5, "poisson_ratio",
-            "a Poisson ratio in (-1, 0.5)");
+  std::tie(p.density, p.youngs_modulus, p.poisson_ratio) = read_isotropic_elasticity(t);
   return LinearElastic(p);
 }
 

@@ -119,7 +119,7 @@ void Orthotropic::read_expansion(TableReader& t, Parameters& p, std::size_t coun
     const std::vector<double> values = t.numbers(d.coefficients, count);
     std::array<double, 3>& target = k == 0 ? p.alpha : p.beta;
     for (int i = 0; i < 3; ++i) target[i] = values[static_cast<std::size_t>(source[i])];
-    (k == 0 ? p.temperature_change : p.concentration) = read_time_function(t, d.driver, d.driver_what);
+    (k == 0 ? p.temperature_change : p.concentration) = t.time_function(d.driver, d.driver_what);
   }
 }
 

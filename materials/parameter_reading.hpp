@@ -1,17 +1,13 @@
 // Reading helpers shared by the models' parameter readers.
 #pragma once
-#include <string_view>
-
-#include "engine/time_function.hpp"
+#include <tuple>
 
 namespace flowmpm {
 
 class TableReader;
 
-// A uniform value given as a number, or as a function of time: an array of
-// [time (s), value] pairs with increasing times, piecewise linear between
-// them and constant outside. `what` names the quantity and its unit for
-// messages ("a temperature change in K").
-TimeFunction read_time_function(TableReader& t, std::string_view key, std::string_view what);
+// density (kg/m^3), youngs_modulus (Pa) and poisson_ratio, validated: the
+// isotropic elastic constants that several models start from.
+std::tuple<double, double, double> read_isotropic_elasticity(TableReader& t);
 
 }  // namespace flowmpm

@@ -42,13 +42,7 @@ void check_invariants(double half_width = 0.25) {
     Vec<D> sum_dN = Vec<D>::Zero(), sum_Nx = Vec<D>::Zero();
     Eigen::Matrix<double, D, D> sum_xdN = Eigen::Matrix<double, D, D>::Zero();
     for (int a = 0; a < s.size; ++a) {
-      Index<D> ijk;
-      std::size_t rest = s.node[a];
-      for (int d = 0; d < D; ++d) {
-        ijk[d] = static_cast<int>(rest % grid.nodes[d]);
-        rest /= grid.nodes[d];
-      }
-      const Vec<D> xI = grid.node_position(ijk);
+      const Vec<D> xI = grid.node_position(grid.node_ijk(s.node[a]));
       CHECK(s.N[a] >= -1e-15);
       sum_N += s.N[a];
       sum_dN += s.dN[a];
