@@ -25,6 +25,17 @@ inline Material material_from_text(const std::string& text) {
   return read_material(reader);
 }
 
+// The message with which reading `text` as a material fails ("no error"
+// if it does not).
+inline std::string material_error(const std::string& text) {
+  try {
+    material_from_text(text);
+  } catch (const CaseError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
 template <class Model, StressState S>
 struct MaterialPoint {
   const Model& model;

@@ -31,6 +31,7 @@
 using namespace flowmpm;
 using flowmpm::testing::MaterialPoint;
 using flowmpm::testing::material_from_text;
+using flowmpm::testing::material_error;
 
 namespace {
 
@@ -188,18 +189,10 @@ TEST_CASE("objectivity: a rigid rotation turns the stress and the damage does no
 }
 
 TEST_CASE("validation") {
-  auto error_of = [](const std::string& text) {
-    try {
-      material_from_text(text);
-    } catch (const CaseError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
-  CHECK(error_of(base).find("give exactly one of failure_strain") != std::string::npos);
-  CHECK(error_of(base + "failure_strain = 7e-4\nfracture_energy = 10.0\n").find("give exactly one of failure_strain") != std::string::npos);
-  CHECK(error_of(base + "failure_strain = 5e-5\n").find("failure_strain: expected a failure strain eps_f above initiation_strain") != std::string::npos);
-  CHECK(error_of(base + "fracture_energy = -1.0\n").find("fracture_energy: expected a positive fracture energy") != std::string::npos);
+  CHECK(material_error(base).find("give exactly one of failure_strain") != std::string::npos);
+  CHECK(material_error(base + "failure_strain = 7e-4\nfracture_energy = 10.0\n").find("give exactly one of failure_strain") != std::string::npos);
+  CHECK(material_error(base + "failure_strain = 5e-5\n").find("failure_strain: expected a failure strain eps_f above initiation_strain") != std::string::npos);
+  CHECK(material_error(base + "fracture_energy = -1.0\n").find("fracture_energy: expected a positive fracture energy") != std::string::npos);
 }
 
 namespace {
