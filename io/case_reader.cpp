@@ -1,5 +1,6 @@
 #include "io/case_reader.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -22,6 +23,22 @@ std::string describe(const toml::node& node) {
   }
 }
 
+// Levenshtein distance: insertions, deletions and substitutions.
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
 }  // namespace
 
 std::string source_of(const toml::node& node, const std::string& fallback_file) {
@@ -39,7 +56,10 @@ std::string TableReader::dotted(std::string_view key) const {
   return path_.empty() ? std::string(key) : path_ + "." + std::string(key);
 }
 
-bool TableReader::has(std::string_view key) const { return table_->contains(key); }
+bool TableReader::has(std::string_view key) const {
+  known_.emplace(key);
+  return table_->contains(key);
+}
 
 std::string TableReader::location(const toml::node& node, std::string_view key) const {
   if (overrides_) {
@@ -79,11 +99,13 @@ const toml::node& TableReader::required(std::string_view key) {
     throw CaseError(source_of(*table_, file_) + ": " + dotted(key) + ": missing required key");
   }
   used_.emplace(key);
+  known_.emplace(key);
   return *n;
 }
 
 const toml::node* TableReader::node(std::string_view key) {
   const toml::node* n = table_->get(key);
+  known_.emplace(key);
   if (n) used_.emplace(key);
   return n;
 }
@@ -208,9 +230,16 @@ std::vector<TableReader> TableReader::tables(std::string_view key) {
 
 void TableReader::reject_unknown_keys() const {
   for (auto&& [key, value] : *table_) {
-    if (!used_.count(key.str())) {
-      throw CaseError(location(value, key.str()) + ": " + dotted(key.str()) + ": unknown key");
+    if (used_.count(key.str())) continue;
+    // The nearest understood key by edit distance, if it is a likely typo.
+    std::string nearest;
+    std::size_t best = 3;
+    for (const std::string& candidate : known_) {
+      const std::size_t d = edit_distance(key.str(), candidate);
+      if (d < best) best = d, nearest = candidate;
     }
+    throw CaseError(location(value, key.str()) + ": " + dotted(key.str()) + ": unknown key" +
+                    (nearest.empty() ? "" : " (did you mean " + dotted(nearest) + "?)"));
   }
 }
 

@@ -74,7 +74,8 @@ class TableReader {
   // Fails for the table as a whole.
   [[noreturn]] void fail_table(std::string_view message) const;
 
-  // Fails on the first key of this table that was never read.
+  // Fails on the first key of this table that was never read, suggesting
+  // the nearest key the table understands.
   void reject_unknown_keys() const;
 
   std::string dotted(std::string_view key) const;
@@ -92,6 +93,9 @@ class TableReader {
   std::string path_, file_;
   std::shared_ptr<const std::map<std::string, std::string>> overrides_;
   std::set<std::string, std::less<>> used_;
+  // Every key the program asked for, present or not: the keys this table
+  // understands, for "did you mean" in reject_unknown_keys().
+  mutable std::set<std::string, std::less<>> known_;
 };
 
 }  // namespace flowmpm

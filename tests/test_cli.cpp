@@ -123,7 +123,7 @@ TEST_CASE("a bad case file is rejected with one clear message and nothing is wri
   }
   SUBCASE("an unknown key") {
     const int line = c.replace("scheme = ", "shceme = \"usl\"");
-    expect_rejected(dir, c.text(), line, {"analysis.shceme", "unknown key"});
+    expect_rejected(dir, c.text(), line, {"analysis.shceme", "unknown key", "did you mean analysis.scheme?"});
   }
   SUBCASE("a value of the wrong type") {
     const int line = c.replace("dt = ", "dt = \"fast\"");
