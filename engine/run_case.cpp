@@ -186,7 +186,14 @@ RunSummary run(const Case& c, const RunOptions& options) {
       if (c.guard_every > 0 && model.step % c.guard_every == 0) sim.snapshot_into(last_good);
       model.dt = next_dt();
       const auto t0 = Clock::now();
-      sim.advance();
+      try {
+        sim.advance();
+      } catch (const SimulationError&) {
+        throw;
+      } catch (const std::exception& e) {
+        // A stage threw (e.g. a material's return mapping did not converge).
+        throw SimulationError(fmt::format("step {} (t = {:.6g} s): {}", model.step + 1, model.t, e.what()));
+      }
       summary.step_loop_seconds += seconds_since(t0);
       check_guard();
       const bool last = done();
