@@ -10,6 +10,7 @@
 #include "engine/shape_gimp.hpp"
 #include "engine/shape_linear.hpp"
 #include "engine/reference/reference.hpp"
+#include "io/case_reader.hpp"
 #include "engine/simulation.hpp"
 #include "io/results_h5.hpp"
 #include "io/xdmf.hpp"
@@ -87,7 +88,12 @@ RunSummary run(const Case& c, const RunOptions& options) {
   std::optional<ResultsH5> h5;
   std::optional<TimeseriesCsv> csv;
   if (options.write_results) {
-    std::filesystem::create_directories(dir);
+    std::error_code error;
+    std::filesystem::create_directories(dir, error);
+    if (error) {
+      throw CaseError("output directory " + dir.string() + ": cannot create it (" + error.message() +
+                      "); set output.directory or --output");
+    }
     h5.emplace(dir / "results.h5", c.output.fields);
     csv.emplace(dir / "timeseries.csv", body_names);
   }

@@ -224,6 +224,19 @@ TEST_CASE("command-line misuse") {
   }
 }
 
+TEST_CASE("an output directory that cannot be created: exit 1, the path and the key to change") {
+  TempDir dir("flowmpm_test_cli");
+  const fs::path blocker = dir.path / "a_file";
+  write_text(blocker, "not a directory\n");
+  const fs::path case_file = dir.path / "case.toml";
+  write_text(case_file, CaseText::valid().text());
+  const Result r = run_flowmpm({"run", case_file.string(), "--quiet", "--output", (blocker / "out").string()}, dir.path);
+  INFO(r.output);
+  CHECK(r.status == 1);
+  CHECK(contains(r.output, (blocker / "out").string()));
+  CHECK(contains(r.output, "--output"));
+}
+
 TEST_CASE("a missing case file") {
   TempDir dir("flowmpm_test_cli");
   const fs::path missing = dir.path / "no_such_case.toml";
