@@ -108,6 +108,7 @@ void build_model(const Case& c, Model<D, Shape>& model) {
         ParticleInit init;
         init.axes_degrees = body.material_axes;
         init.length = batch.particle_length;
+        init.cell_length = std::pow(model.grid.h.prod(), 1.0 / D);
         for (const Vec<D>& x : batch.x) {
           for (int d = 0; d < D; ++d) init.position[d] = x[d];
           states.push_back(material.initial_state(init));

@@ -27,6 +27,11 @@ struct ParticleInit {
   // only the angle about z is used.
   std::array<double, 3> axes_degrees{};
   double length = 0.0;  // as MaterialInput::length
+  // Cell size (m): the geometric mean of the cell's edges. With linear shape
+  // functions the particles of one cell share their velocity gradient, so a
+  // band of localised strain is a cell wide, however many particles per
+  // cell (crack band regularisation).
+  double cell_length = 0.0;
 };
 
 }  // namespace flowmpm

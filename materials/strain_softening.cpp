@@ -35,14 +35,14 @@ StrainSoftening::State StrainSoftening::initial_state(const ParticleInit& init) 
   }
   const double E = parameters.youngs_modulus, eps_i = parameters.initiation_strain;
   const double G_c = *parameters.fracture_energy;
-  s.eps_f = init.length > 0.0 ? 2.0 * G_c / (E * eps_i * init.length) : 0.0;
+  s.eps_f = init.cell_length > 0.0 ? 2.0 * G_c / (E * eps_i * init.cell_length) : 0.0;
   if (!(s.eps_f > eps_i)) {
     std::ostringstream m;
     m.precision(6);
-    m << "strain_softening: particles of size h = " << init.length << " m are too large for the crack band of "
+    m << "strain_softening: cells of size h = " << init.cell_length << " m are too large for the crack band of "
       << "fracture_energy = " << G_c << " J/m^2: eps_f = 2 G_c / (E eps_i h) = " << s.eps_f
-      << " is not above initiation_strain = " << eps_i << " (the band would snap back); use particles "
-      << "smaller than 2 G_c / (E eps_i^2) = " << 2.0 * G_c / (E * eps_i * eps_i) << " m";
+      << " is not above initiation_strain = " << eps_i << " (the band would snap back); use "
+      << "cells smaller than 2 G_c / (E eps_i^2) = " << 2.0 * G_c / (E * eps_i * eps_i) << " m";
     throw CaseError(m.str());
   }
   return s;

@@ -17,9 +17,11 @@
 //   d g = (1/2) E eps_i eps_f d kappa / (eps_f - eps_i)   on eps_i < kappa < eps_f,
 // so failure dissipates g_f = (1/2) E eps_i eps_f per unit volume on any
 // path. Crack band: given the fracture energy G_c (J/m^2) instead of eps_f,
-// each particle takes eps_f = 2 G_c / (E eps_i h), h its size
-// (ParticleInit::length), so the band of particles that fails dissipates
-// G_c per unit crack area whatever the resolution. The band must soften,
+// each particle takes eps_f = 2 G_c / (E eps_i h), h the cell size
+// (ParticleInit::cell_length): the strain localises in a band one cell wide
+// (the particles of a cell share their velocity gradient), so the band that
+// fails dissipates G_c per unit crack area whatever the resolution and the
+// number of particles per cell. The band must soften,
 // eps_f > eps_i, i.e. h < 2 G_c / (E eps_i^2); larger particles are an error.
 // The total strain is kept in the state and turns with the material
 // (rotation.hpp); the reduced states: plane strain eps_zz = 0; plane stress
@@ -70,7 +72,7 @@ struct StrainSoftening {
   // Reads and validates [materials.NAME] (type = "strain_softening").
   static StrainSoftening read(TableReader& table);
 
-  // eps_f of a particle of size init.length; throws CaseError if the crack
+  // eps_f in a band of width init.cell_length; throws CaseError if the crack
   // band would snap back (eps_f <= eps_i).
   State initial_state(const ParticleInit& init) const;
 

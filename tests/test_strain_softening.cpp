@@ -114,12 +114,13 @@ TEST_CASE("1D: unloading along the secant, reloading to the same point, damage i
   CHECK(p.state.dissipated > dissipated);
 }
 
-TEST_CASE("crack band: eps_f = 2 G_c / (E eps_i h), so a broken particle dissipates G_c / h") {
+TEST_CASE("crack band: eps_f = 2 G_c / (E eps_i h), h the cell size, so a broken particle dissipates G_c / h") {
   const StrainSoftening m = with_fracture_energy();
   for (double h : {0.01, 0.005, 0.001}) {
     CAPTURE(h);
     ParticleInit init;
     init.length = h;
+    init.cell_length = h;
     Point1D p(m, init);
     CHECK(p.state.eps_f == doctest::Approx(2 * G_c / (E * eps_i * h)).epsilon(1e-14));
     const double eps_f_h = p.state.eps_f;
@@ -127,11 +128,11 @@ TEST_CASE("crack band: eps_f = 2 G_c / (E eps_i h), so a broken particle dissipa
     CHECK(p.state.dissipated * h == doctest::Approx(G_c).epsilon(1e-12));
     CHECK(p.sigma[0] == 0.0);
   }
-  // Particles too large for the band (eps_f <= eps_i, a snap-back) are an error.
+  // Cells too large for the band (eps_f <= eps_i, a snap-back) are an error.
   ParticleInit coarse;
-  coarse.length = 0.1;  // 2 G_c / (E eps_i^2) = 0.0667 m
+  coarse.length = coarse.cell_length = 0.1;  // 2 G_c / (E eps_i^2) = 0.0667 m
   CHECK_THROWS_WITH_AS(m.initial_state(coarse),
-                       doctest::Contains("particles of size h = 0.1 m are too large for the crack band"), CaseError);
+                       doctest::Contains("cells of size h = 0.1 m are too large for the crack band"), CaseError);
 }
 
 TEST_CASE("uniaxial strain (3D and plane strain): damage starts at eps_xx = eps_i sqrt(E / M), same energy") {
@@ -210,7 +211,7 @@ namespace {
 // Without the notch the discrete wave fronts (dispersed over a few cells)
 // put the centre's neighbours at the peak stress too, and the damage
 // spreads over 3 to 11 particles (README).
-std::string bar_case(int N, bool regularised) {
+std::string bar_case(int N, bool regularised, int particles_per_cell = 1) {
   const double L = 0.1, h = 2 * L / N, c = std::sqrt(M / 2400.0);
   const double v0 = 0.475 * eps_i * std::sqrt(E / M) * c, ramp = 0.2 * L / c;
   const std::string softening = regularised ? "fracture_energy = 2.5\n" : "failure_strain = 2e-4\n";
@@ -224,7 +225,8 @@ std::string bar_case(int N, bool regularised) {
   const char* names[3] = {"left", "notch", "right"};
   for (int k = 0; k < 3; ++k) {
     s << "[[bodies]]\nname = \"" << names[k] << "\"\nmaterial = \"" << (k == 1 ? "notch" : "concrete")
-      << "\"\nmin = [" << x[k] << ", 0.0]\nmax = [" << x[k + 1] << ", " << h << "]\nparticles_per_cell = 1\n";
+      << "\"\nmin = [" << x[k] << ", 0.0]\nmax = [" << x[k + 1] << ", " << h << "]\nparticles_per_cell = "
+      << particles_per_cell << "\n";
   }
   s << "[[node_sets]]\nname = \"lateral\"\nmin = [" << -L - h << ", 0.0]\nmax = [" << L + h << ", " << h
     << "]\nvelocity = { y = 0.0 }\n"
@@ -275,6 +277,18 @@ TEST_CASE("whole case: the bar breaks at the centre only; regularised, it dissip
     CHECK(r.most_damage == 1.0);
     CHECK(r.dissipated_per_area == doctest::Approx(2.5).epsilon(1e-9));
   }
+}
+
+TEST_CASE("whole case: regularised, 2 x 2 particles per cell still dissipate G_c (the band is a cell)") {
+  // The notch cell's four particles share their strain and break together;
+  // regularising by the cell size (not the particle size, half of it) keeps
+  // the dissipated energy at G_c.
+  const BarResult r = run_bar(testing::case_from_text("softening_bar_2ppc", bar_case(63, true, 2)));
+  MESSAGE("regularised, 2 particles per cell: dissipated " << r.dissipated_per_area << " J/m^2, damaged "
+          << r.damaged);
+  CHECK(r.damaged == 4);
+  CHECK(r.most_damage == 1.0);
+  CHECK(r.dissipated_per_area == doctest::Approx(2.5).epsilon(1e-9));
 }
 
 TEST_CASE("whole case: without regularisation the dissipated energy is (1/2) E eps_i eps_f h, falling with h") {
