@@ -4,6 +4,7 @@
 // per unit cross-section in 1D.
 #pragma once
 #include <cmath>
+#include <numbers>
 #include <type_traits>
 
 #include "engine/particle_sort.hpp"
@@ -111,6 +112,10 @@ void build_model(const Case& c, Model<D, Shape>& model) {
         init.cell_length = std::pow(model.grid.h.prod(), 1.0 / D);
         for (const Vec<D>& x : batch.x) {
           for (int d = 0; d < D; ++d) init.position[d] = x[d];
+          if (const auto& center = body.material_axes_center; center && D > 1) {
+            const double radial = std::atan2(init.position[1] - (*center)[1], init.position[0] - (*center)[0]);
+            init.axes_degrees[0] = body.material_axes[0] + radial * 180.0 / std::numbers::pi;
+          }
           states.push_back(material.initial_state(init));
         }
       }

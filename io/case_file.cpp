@@ -222,6 +222,11 @@ void read_body(TableReader t, Case& c, std::size_t index) {
     const Vec3 angles = vector_of(t, "material_axes", c.dimension == 2 ? 1 : 3);
     b.material_axes = angles;
   }
+  if (t.has("material_axes_center")) {
+    t.require(c.dimension > 1, "material_axes_center", "no material axes in 1D");
+    const std::vector<double> center = t.numbers("material_axes_center", 2);
+    b.material_axes_center = std::array<double, 2>{center[0], center[1]};
+  }
   t.reject_unknown_keys();
   c.bodies.push_back(b);
 }

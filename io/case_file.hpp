@@ -34,6 +34,11 @@ struct BodySpec {
   Vec3 velocity{};            // initial velocity (m/s)
   // Rotation of the material axes (degrees) about z, y, x: R = Rz Ry Rx.
   Vec3 material_axes{};
+  // Cylindrical material axes: each particle's angle about z gets
+  // atan2(y - y_c, x - x_c) added, so that the material x axis points away
+  // from the axis through (x_c, y_c) parallel to z (wood: radial, with the
+  // material y tangential and z along the pith).
+  std::optional<std::array<double, 2>> material_axes_center;
 };
 
 struct NodeSetSpec {

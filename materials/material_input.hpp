@@ -22,9 +22,10 @@ struct MaterialInput {
 
 struct ParticleInit {
   std::array<double, 3> position{};  // m
-  // Material-axes rotation of the particle's body, in degrees, about z, y
-  // and x, applied as R = Rz Ry Rx (NairnMPM's convention; seed 002). In 2D
-  // only the angle about z is used.
+  // Material-axes rotation of the particle, in degrees, about z, y and x,
+  // applied as R = Rz Ry Rx (NairnMPM's convention; seed 002): its body's
+  // material_axes, plus its polar angle about material_axes_center if the
+  // body has one. In 2D only the angle about z is used.
   std::array<double, 3> axes_degrees{};
   double length = 0.0;  // as MaterialInput::length
   // Cell size (m): the geometric mean of the cell's edges. With linear shape

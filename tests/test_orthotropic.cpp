@@ -455,3 +455,27 @@ TEST_CASE("whole case: off-axis tension of a transversely isotropic lamina in pl
   CHECK(std::abs(b.stress[0]) < 1e-3 * b.stress[1]);
   CHECK(b.stress[2] == 0.0);
 }
+
+TEST_CASE("cylindrical material axes: each particle's x axis points away from the centre") {
+  // A 2D disc-like block around (0.5, 0.5) with material_axes_center: the
+  // initial axes of every particle are a rotation about z by its polar
+  // angle plus the body's angle (10 degrees here), to round-off.
+  const Case c = testing::case_from_text("cylindrical_axes",
+                                         "[analysis]\ndimension = 2\ndt = 1e-7\nsteps = 1\n"
+                                         "[grid]\ncell_size = 0.1\ncells = [10, 10]\n"
+                                         "[materials.wood]\n" + poplar_text +
+                                         "[[bodies]]\nmaterial = \"wood\"\nmin = [0.2, 0.2]\nmax = [0.8, 0.8]\n"
+                                         "particles_per_cell = 2\nmaterial_axes = [10.0]\n"
+                                         "material_axes_center = [0.5, 0.5]\n");
+  Simulation<2, LinearShape> sim(c);
+  const auto& batch = sim.model().batches.at(0);
+  const auto& states = std::get<StateArray<Orthotropic>>(batch.states);
+  REQUIRE(states.size() == batch.size());
+  for (std::size_t p = 0; p < batch.size(); ++p) {
+    const double angle = std::atan2(batch.x[p][1] - 0.5, batch.x[p][0] - 0.5) + 10.0 * pi / 180.0;
+    const Eigen::Matrix3d R = states[p].axes.toRotationMatrix();
+    CHECK(R(0, 0) == doctest::Approx(std::cos(angle)).epsilon(1e-12));
+    CHECK(R(1, 0) == doctest::Approx(std::sin(angle)).epsilon(1e-12));
+    CHECK(R(2, 2) == doctest::Approx(1.0).epsilon(1e-12));
+  }
+}
