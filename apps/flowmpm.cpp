@@ -198,6 +198,13 @@ int main(int argc, char** argv) {
                    b.name, c.end_time, b.mean_stress[0], b.mean_stress[1], b.mean_stress[2], b.mean_strain[0],
                    b.mean_strain[1], b.mean_strain[2]);
     }
+    if (s.energy_initial > 0.0) {
+      spdlog::info("energy (kinetic + strain): {:.6g} J at the start, {:.6g} J at the end, drift {:+.3g} %",
+                   s.energy_initial, s.energy_final, 100.0 * (s.energy_final - s.energy_initial) / s.energy_initial);
+    }
+    for (const auto& [name, value] : s.errors) {
+      spdlog::info("error against the {} reference: {} = {:.4g}", c.reference.type, name, value);
+    }
   } catch (const flowmpm::CaseError& e) {
     spdlog::error("{}", e.what());
     return 1;
