@@ -39,19 +39,6 @@ std::string data_item(const std::string& h5_path, const std::string& dimensions,
          "</DataItem>";
 }
 
-// One column of an n x 6 dataset as a scalar attribute: an XDMF hyperslab
-// (start, stride, count per dimension) of the HDF5 dataset.
-std::string column_attribute(const std::string& name, const std::string& h5_path, const std::string& count,
-                             int column) {
-  return "        <Attribute Name=\"" + name + "\" AttributeType=\"Scalar\" Center=\"Node\">\n"
-         "          <DataItem ItemType=\"HyperSlab\" Dimensions=\"" + count + " 1\" Type=\"HyperSlab\">\n"
-         "            <DataItem Dimensions=\"3 2\" Format=\"XML\">0 " + std::to_string(column) + " 1 1 " + count +
-         " 1</DataItem>\n"
-         "            " + data_item(h5_path, count + " 6", "Float", 8) + "\n"
-         "          </DataItem>\n"
-         "        </Attribute>\n";
-}
-
 struct AttributeField {
   bool enabled;
   const char* name;
@@ -69,8 +56,11 @@ std::string xdmf_document(const std::string& h5_name, const ResultsH5& results) 
     throw std::invalid_argument("XDMF needs the position field: it is the grid's geometry");
   const AttributeField attributes[] = {
       {f.velocity, "velocity", "Vector", 3, "Float", 8},
-      {f.stress, "stress", "Tensor6", 6, "Float", 8},
-      {f.strain, "strain", "Tensor6", 6, "Float", 8},
+      // "Matrix": the six values as stored, in our Voigt order. XDMF's
+      // "Tensor6" means xx xy xz yy yz zz, and ParaView's legacy reader
+      // builds a wrong 3 x 3 tensor from our order (checked with pvpython).
+      {f.stress, "stress", "Matrix", 6, "Float", 8},
+      {f.strain, "strain", "Matrix", 6, "Float", 8},
       {f.volume, "volume", "Scalar", 1, "Float", 8},
       {f.mass, "mass", "Scalar", 1, "Float", 8},
       {f.material, "material", "Scalar", 1, "Int", 4},
@@ -106,15 +96,6 @@ std::string xdmf_document(const std::string& h5_name, const ResultsH5& results) 
                        a.precision) +
              "\n";
       out += "        </Attribute>\n";
-    }
-    // ParaView labels a 6-component array XX YY ZZ XY YZ XZ, not in our
-    // Voigt order: each component is also given as a named scalar.
-    for (const char* field : {"stress", "strain"}) {
-      if (std::string(field) == "stress" ? !f.stress : !f.strain) continue;
-      const char* components[] = {"xx", "yy", "zz", "yz", "xz", "xy"};
-      for (int k = 0; k < 6; ++k) {
-        out += column_attribute(std::string(field) + "_" + components[k], file + ":" + group + "/" + field, count, k);
-      }
     }
     out += "      </Grid>\n";
   }
