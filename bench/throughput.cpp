@@ -9,7 +9,9 @@
 //   - peak resident memory per particle (whole process, and above the
 //     resident memory before the model was built);
 //   - the share of each stage in the 1-thread step (the rest: sorting and
-//     the time loop).
+//     the time loop);
+//   - the cost of one output step (all fields to results.h5), in bytes and
+//     microseconds per particle, apart from the step rate.
 // Output steps are not part of this program (see README, output cost).
 //
 //   build/bench/bench_throughput [--sizes 1e4,1e5,1e6] [--steps-per-size N]
@@ -18,6 +20,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -28,6 +31,7 @@
 
 #include "engine/shape_linear.hpp"
 #include "engine/simulation.hpp"
+#include "io/results_h5.hpp"
 
 using namespace flowmpm;
 using Clock = std::chrono::steady_clock;
@@ -78,6 +82,24 @@ void reset_peak_resident() { std::ofstream("/proc/self/clear_refs") << "5"; }
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+}
+
+// Cost of one output step: the particle snapshot written to results.h5
+// (all fields), in bytes and seconds per particle.
+std::pair<double, double> output_cost(const Case& c) {
+  Simulation<3, LinearShape> sim(c);
+  const auto dir = std::filesystem::temp_directory_path() / "flowmpm-bench-output";
+  std::filesystem::create_directories(dir);
+  const auto start = Clock::now();
+  {
+    ResultsH5 h5(dir / "results.h5", OutputFields{});
+    h5.write(sim.snapshot());
+  }
+  const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  const double bytes = static_cast<double>(std::filesystem::file_size(dir / "results.h5"));
+  std::filesystem::remove_all(dir);
+  const double n = static_cast<double>(sim.model().particle_count());
+  return {bytes / n, seconds / n};
 }
 
 struct Timing {
@@ -141,15 +163,16 @@ int main(int argc, char** argv) {
 
   std::printf("3D elastic block on a fixed base under gravity, USL, linear shape functions; medians of %d runs\n",
               repeats);
-  std::printf("%10s %6s %10s %10s %8s %10s %8s %9s %9s %9s  %s\n", "particles", "steps", "1 thr", "2 thr",
-              "speedup", "serial 1t", "graph", "setup", "B/p peak", "B/p model", "stage shares at 1 thread");
-  std::printf("%10s %6s %10s %10s %8s %10s %8s %9s %9s %9s\n", "", "", "Mp-st/s", "Mp-st/s", "", "Mp-st/s",
-              "overhead", "s/Mp", "", "");
+  std::printf("%10s %6s %10s %10s %8s %10s %8s %9s %9s %9s %8s %8s  %s\n", "particles", "steps", "1 thr", "2 thr",
+              "speedup", "serial 1t", "graph", "setup", "B/p peak", "B/p model", "output", "output",
+              "stage shares at 1 thread");
+  std::printf("%10s %6s %10s %10s %8s %10s %8s %9s %9s %9s %8s %8s\n", "", "", "Mp-st/s", "Mp-st/s", "", "Mp-st/s",
+              "overhead", "s/Mp", "", "", "B/p", "us/p");
   std::ofstream csv;
   if (!csv_path.empty()) {
     csv.open(csv_path);
     csv << "particles,steps,rate_1t,rate_2t,speedup,rate_serial_1t,graph_overhead,setup_s_per_million,"
-           "bytes_per_particle_peak,bytes_per_particle_model";
+           "bytes_per_particle_peak,bytes_per_particle_model,output_bytes_per_particle,output_seconds_per_particle";
     for (int i = 0; i < stage_count; ++i) csv << ",share_" << stage_name(static_cast<Stage>(i));
     csv << "\n";
   }
@@ -173,6 +196,7 @@ int main(int argc, char** argv) {
       for (int i = 0; i < stage_count; ++i) shares[i].push_back(one.stage_share[i]);
     }
     const double peak = 1024.0 * resident_kib("VmHWM:");
+    const auto [out_bytes, out_seconds] = output_cost(c);
     const double bpp_peak = peak / n, bpp_model = (peak - 1024.0 * rss_before) / n;
     const double m1 = median(r1), m2 = median(r2), ms = median(rs);
     std::ostringstream stage_text;
@@ -180,13 +204,14 @@ int main(int argc, char** argv) {
       const double share = median(shares[i]);
       if (share > 0.0) stage_text << stage_name(static_cast<Stage>(i)) << " " << std::lround(100 * share) << "% ";
     }
-    std::printf("%10zu %6d %10.2f %10.2f %8.2f %10.2f %7.1f%% %9.3f %9.0f %9.0f  %s\n", n, steps, m1 / 1e6, m2 / 1e6,
-                m2 / m1, ms / 1e6, 100.0 * (ms / m1 - 1.0), median(setup) / (n / 1e6), bpp_peak, bpp_model,
-                stage_text.str().c_str());
+    std::printf("%10zu %6d %10.2f %10.2f %8.2f %10.2f %7.1f%% %9.3f %9.0f %9.0f %8.0f %8.3f  %s\n", n, steps,
+                m1 / 1e6, m2 / 1e6, m2 / m1, ms / 1e6, 100.0 * (ms / m1 - 1.0), median(setup) / (n / 1e6), bpp_peak,
+                bpp_model, out_bytes, 1e6 * out_seconds, stage_text.str().c_str());
     std::fflush(stdout);
     if (csv) {
       csv << n << "," << steps << "," << m1 << "," << m2 << "," << m2 / m1 << "," << ms << "," << (ms / m1 - 1.0)
-          << "," << median(setup) / (n / 1e6) << "," << bpp_peak << "," << bpp_model;
+          << "," << median(setup) / (n / 1e6) << "," << bpp_peak << "," << bpp_model << "," << out_bytes << ","
+          << out_seconds;
       for (int i = 0; i < stage_count; ++i) csv << "," << median(shares[i]);
       csv << "\n";
     }
