@@ -82,34 +82,10 @@ RunSummary run(const Case& c, const RunOptions& options) {
   summary.end_time = c.end_time;
   summary.setup_seconds = options.setup_seconds + seconds_since(setup_start);
 
-  const auto& dir = c.output.directory;
-  std::vector<std::string> body_names;
-  for (const auto& b : c.bodies) body_names.push_back(b.name);
-  std::optional<ResultsH5> h5;
-  std::optional<TimeseriesCsv> csv;
-  if (options.write_results) {
-    std::error_code error;
-    std::filesystem::create_directories(dir, error);
-    if (error) {
-      throw CaseError("output directory " + dir.string() + ": cannot create it (" + error.message() +
-                      "); set output.directory or --output");
-    }
-    h5.emplace(dir / "results.h5", c.output.fields);
-    csv.emplace(dir / "timeseries.csv", body_names);
-  }
   // Without output.every: about 20 output steps over the run.
   const std::int64_t planned_steps =
       c.dt_auto ? static_cast<std::int64_t>(std::ceil(c.end_time / c.dt)) : c.steps;
   const std::int64_t every = c.output.every > 0 ? c.output.every : std::max<std::int64_t>(1, planned_steps / 20);
-  auto write_output = [&] {
-    const auto t0 = Clock::now();
-    if (options.write_results) {
-      h5->write(sim.snapshot());
-      write_xdmf(dir / "results.xdmf", "results.h5", *h5);
-      csv->write(sim.diagnostics(c.bodies.size()));
-    }
-    summary.output_seconds += seconds_since(t0);
-  };
   std::optional<Reference> reference;
   std::int64_t sample_every = 1;
   auto sample_reference = [&] {
@@ -126,6 +102,37 @@ RunSummary run(const Case& c, const RunOptions& options) {
                  sample_every == 1 ? "" : "s");
   }
 
+  const auto& dir = c.output.directory;
+  std::vector<std::string> body_names;
+  for (const auto& b : c.bodies) body_names.push_back(b.name);
+  std::optional<ResultsH5> h5;
+  std::optional<TimeseriesCsv> csv;
+  if (options.write_results) {
+    std::error_code error;
+    std::filesystem::create_directories(dir, error);
+    if (error) {
+      throw CaseError("output directory " + dir.string() + ": cannot create it (" + error.message() +
+                      "); set output.directory or --output");
+    }
+    h5.emplace(dir / "results.h5", c.output.fields);
+    std::vector<std::string> error_names;
+    if (reference)
+      for (const auto& [name, value] : reference->errors()) error_names.push_back(name);
+    csv.emplace(dir / "timeseries.csv", body_names, error_names);
+  }
+  auto write_output = [&] {
+    const auto t0 = Clock::now();
+    if (options.write_results) {
+      h5->write(sim.snapshot());
+      write_xdmf(dir / "results.xdmf", "results.h5", *h5);
+      TimeseriesRow row = sim.diagnostics(c.bodies.size());
+      // The error norms so far: over the particles and the samples up to now.
+      if (reference)
+        for (const auto& [name, value] : reference->errors()) row.errors.push_back(value);
+      csv->write(row);
+    }
+    summary.output_seconds += seconds_since(t0);
+  };
   auto finish = [&](const std::string& status) {
     summary.status = status;
     summary.steps = model.step;

@@ -40,9 +40,9 @@ constexpr const char* kComponents[6] = {"xx", "yy", "zz", "yz", "xz", "xy"};
 
 }  // namespace
 
-TimeseriesCsv::TimeseriesCsv(const std::filesystem::path& path,
-                             std::vector<std::string> body_names)
-    : body_count_(body_names.size()), path_(path.string()) {
+TimeseriesCsv::TimeseriesCsv(const std::filesystem::path& path, std::vector<std::string> body_names,
+                             std::vector<std::string> error_names)
+    : body_count_(body_names.size()), error_count_(error_names.size()), path_(path.string()) {
   errno = 0;
   out_.open(path, std::ios::out | std::ios::trunc);
   if (!out_) fail("cannot open", path_);
@@ -51,6 +51,7 @@ TimeseriesCsv::TimeseriesCsv(const std::filesystem::path& path,
     for (const char* quantity : {".stress_", ".strain_"})
       for (const char* component : kComponents)
         header += "," + csv_field(name + quantity + component);
+  for (const std::string& name : error_names) header += "," + csv_field("error." + name);
   header += '\n';
   errno = 0;
   if (!out_.write(header.data(), static_cast<std::streamsize>(header.size())).flush())
@@ -62,6 +63,9 @@ void TimeseriesCsv::write(const TimeseriesRow& row) {
     throw std::invalid_argument("timeseries row for " + path_ + " has " +
                                 std::to_string(row.bodies.size()) + " bodies, expected " +
                                 std::to_string(body_count_));
+  if (row.errors.size() != error_count_)
+    throw std::invalid_argument("timeseries row for " + path_ + " has " + std::to_string(row.errors.size()) +
+                                " error norms, expected " + std::to_string(error_count_));
   std::string line = std::to_string(row.step);
   for (const double value : {row.time, row.kinetic_energy, row.strain_energy}) {
     line += ',';
@@ -73,6 +77,10 @@ void TimeseriesCsv::write(const TimeseriesRow& row) {
         line += ',';
         append_number(line, value);
       }
+  for (const double value : row.errors) {
+    line += ',';
+    append_number(line, value);
+  }
   line += '\n';
   errno = 0;
   if (!out_.write(line.data(), static_cast<std::streamsize>(line.size())).flush())

@@ -1,5 +1,6 @@
 // timeseries.csv: one row per recorded step: time, kinetic and strain energy,
-// and for each body the mean stress and strain (Voigt order, tensor shear).
+// for each body the mean stress and strain (Voigt order, tensor shear), and
+// the error norms of a reference solution so far (columns error.<name>).
 // Each row is flushed as it is written, so the file is never cut mid-row.
 #pragma once
 #include <array>
@@ -22,18 +23,20 @@ struct TimeseriesRow {
   double kinetic_energy = 0.0;  // J
   double strain_energy = 0.0;   // J
   std::vector<BodyMeans> bodies;  // in the order of the body names
+  std::vector<double> errors;     // in the order of the error names
 };
 
 class TimeseriesCsv {
  public:
   // Creates (truncates) the file and writes the header; throws
   // std::runtime_error naming the path.
-  TimeseriesCsv(const std::filesystem::path& path, std::vector<std::string> body_names);
+  TimeseriesCsv(const std::filesystem::path& path, std::vector<std::string> body_names,
+                std::vector<std::string> error_names = {});
   void write(const TimeseriesRow& row);
 
  private:
   std::ofstream out_;
-  std::size_t body_count_;
+  std::size_t body_count_, error_count_;
   std::string path_;  // for error messages
 };
 

@@ -16,6 +16,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <fstream>
 #include <sstream>
 
 #include "engine/run_case.hpp"
@@ -125,4 +126,27 @@ TEST_CASE("uniaxial stress reference: the error norms of the seed's Case III") {
   CHECK(e.at("axial_strain") < 1e-9);
   CHECK(e.at("axial_stress") < 1e-6);
   CHECK(e.at("lateral_stress") < 1e-6);
+}
+
+TEST_CASE("timeseries.csv carries the error norms so far; the last row equals summary.json's") {
+  const auto dir = std::filesystem::temp_directory_path() / "flowmpm-tests" / "timeseries_errors";
+  std::filesystem::remove_all(dir);
+  Case c = read_case(testing::config("verification/bar_vibration_small.toml"), {"output.every=80"});
+  c.output.directory = dir;
+  const RunSummary s = run_case(c, RunOptions{});
+  std::ifstream csv(dir / "timeseries.csv");
+  std::string header, line, last;
+  std::getline(csv, header);
+  while (std::getline(csv, line)) last = line;
+  std::vector<std::string> names, values;
+  for (std::stringstream h(header); std::getline(h, line, ',');) names.push_back(line);
+  for (std::stringstream v(last); std::getline(v, line, ',');) values.push_back(line);
+  REQUIRE(names.size() == values.size());
+  int found = 0;
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    if (names[k].rfind("error.", 0) != 0) continue;
+    ++found;
+    CHECK(std::stod(values[k]) == s.errors.at(names[k].substr(6)));  // both written with 17 digits
+  }
+  CHECK(found == 3);
 }

@@ -3,6 +3,7 @@
 // with `scale` the amplitude of the exact solution, so e is relative.
 #pragma once
 #include <cmath>
+#include <limits>
 
 #include "engine/model.hpp"
 #include "io/case_reader.hpp"
@@ -16,7 +17,11 @@ struct RmsError {
     sum_squares += weight * error * error;
     sum_weights += weight;
   }
-  double relative_to(double scale) const { return std::sqrt(sum_squares / sum_weights) / scale; }
+  // NaN before the first sample.
+  double relative_to(double scale) const {
+    if (sum_weights == 0.0) return std::numeric_limits<double>::quiet_NaN();
+    return std::sqrt(sum_squares / sum_weights) / scale;
+  }
 };
 
 // The linear elastic parameters of the first body: the analytical solutions
