@@ -163,7 +163,7 @@ void build_model(const Case& c, Model<D, Shape>& model) {
   // Every particle must start where its stencil has grid nodes.
   for (const auto& batch : model.batches) {
     for (const auto& x : batch.x) {
-      const Index<D> cell = cell_of<D, Shape>(model.grid, x);
+      const Index<D> cell = model.grid.cell_of(x);
       for (int d = 0; d < D; ++d) {
         if (cell[d] < Shape::reach_below || cell[d] + Shape::reach_above > cells[d]) {
           throw CaseError(c.file.string() + ": bodies \"" + c.bodies[batch.body].name +

@@ -53,6 +53,13 @@ struct Grid {
     return index;
   }
 
+  // The cell that holds x (indices may lie outside the grid).
+  Index<D> cell_of(const Vec<D>& x) const {
+    Index<D> c;
+    for (int d = 0; d < D; ++d) c[d] = floor_to_int((x[d] - origin[d]) * inv_h[d]);
+    return c;
+  }
+
   // Inverse of node_index.
   Index<D> node_ijk(std::size_t n) const {
     Index<D> i;

@@ -5,6 +5,7 @@
 #include <atomic>
 #include <mutex>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -39,7 +40,18 @@ struct MirrorPlane {
   std::string name;
   std::vector<std::pair<std::size_t, std::size_t>> pairs;  // (ghost, mirror)
   std::array<std::optional<TimeFunction>, 3> velocity;     // prescribed per axis
-};// Problems found by a stage, reported after the step by the time loop.
+};// "(x, y, z) m" with 6 significant digits, for messages about a particle.
+template <int D>
+std::string position_text(const Vec<D>& x) {
+  std::ostringstream s;
+  s.precision(6);
+  s << "(";
+  for (int d = 0; d < D; ++d) s << (d ? ", " : "") << x[d];
+  s << ") m";
+  return s.str();
+}
+
+// Problems found by a stage, reported after the step by the time loop.
 struct StepFlags {
   std::atomic<bool> resort_needed{false};
   std::atomic<bool> failed{false};

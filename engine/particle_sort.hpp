@@ -24,13 +24,6 @@ void permute(std::vector<T>& field, const std::vector<std::uint32_t>& order) {
 }  // namespace detail
 
 template <int D, class Shape>
-Index<D> cell_of(const Grid<D>& grid, const Vec<D>& x) {
-  Index<D> c;
-  for (int d = 0; d < D; ++d) c[d] = floor_to_int((x[d] - grid.origin[d]) * grid.inv_h[d]);
-  return c;
-}
-
-template <int D, class Shape>
 void sort_particles(Model<D, Shape>& model) {
   using Layout = BlockLayout<D, Shape>;
   auto& layout = model.blocks;
@@ -46,7 +39,7 @@ void sort_particles(Model<D, Shape>& model) {
     // key = block * B^D + cell inside the block (x fastest)
     std::vector<std::uint32_t> key(n);
     tbb::parallel_for(std::size_t{0}, n, [&](std::size_t p) {
-      const Index<D> c = cell_of<D, Shape>(grid, batch.x[p]);
+      const Index<D> c = grid.cell_of(batch.x[p]);
       std::size_t block = 0, local = 0;
       for (int d = D - 1; d >= 0; --d) {
         block = block * layout.blocks[d] + c[d] / B;

@@ -93,9 +93,7 @@ class Simulation {
     }
     std::ostringstream s;
     s.precision(6);
-    s << "a particle at (";
-    for (int d = 0; d < D; ++d) s << (d ? ", " : "") << x[d];
-    s << ") m moves at " << std::sqrt(best) << " m/s";
+    s << "a particle at " << position_text<D>(x) << " moves at " << std::sqrt(best) << " m/s";
     return s.str();
   }
 

@@ -9,7 +9,6 @@
 #pragma once
 #include <atomic>
 #include <cmath>
-#include <sstream>
 
 #include "engine/particle_sort.hpp"
 #include "engine/stencil.hpp"
@@ -29,18 +28,6 @@ int drift_from_block(const Index<D>& c, const Index<D>& block) {
     drift = std::max(drift, c[d] - (block[d] * B + B - 1));
   }
   return drift;
-}
-
-template <int D>
-std::string describe_particle(const Vec<D>& x, const Vec<D>& moved_to) {
-  std::ostringstream s;
-  s.precision(6);
-  s << "a particle at (";
-  for (int d = 0; d < D; ++d) s << (d ? ", " : "") << x[d];
-  s << ") m would move to (";
-  for (int d = 0; d < D; ++d) s << (d ? ", " : "") << moved_to[d];
-  s << ") m";
-  return s.str();
 }
 
 }  // namespace detail
@@ -69,19 +56,20 @@ void g2p_motion(Model<D, Shape>& model) {
       const Vec<D> x_new = b.x[p] + dt * v_grid;
       // A particle must stay where its stencil has nodes and may cross at
       // most one cell per step; otherwise it is not moved and the step fails.
+      // (The range is checked on the grid coordinate before it becomes an int.)
       bool inside = true, one_cell = true;
-      Index<D> c_new;
       for (int d = 0; d < D; ++d) {
         const double g_new = (x_new[d] - grid.origin[d]) * grid.inv_h[d];
         inside = inside && g_new >= Shape::reach_below && g_new < grid.cells[d] - Shape::reach_above + 1;
-        if (!inside) break;
-        c_new[d] = floor_to_int(g_new);
-        const int c_old = floor_to_int((b.x[p][d] - grid.origin[d]) * grid.inv_h[d]);
-        one_cell = one_cell && std::abs(c_new[d] - c_old) <= 1;
+      }
+      const Index<D> c_new = inside ? grid.cell_of(x_new) : Index<D>{};
+      if (inside) {
+        const Index<D> c_old = grid.cell_of(b.x[p]);
+        for (int d = 0; d < D; ++d) one_cell = one_cell && std::abs(c_new[d] - c_old[d]) <= 1;
       }
       const Vec<D> v_new = a * (b.v[p] + dv) + (1.0 - a) * v_grid;
       if (!inside || !one_cell || !v_new.allFinite()) {
-        model.flags.fail(detail::describe_particle<D>(b.x[p], x_new) +
+        model.flags.fail("a particle at " + position_text<D>(b.x[p]) + " would move to " + position_text<D>(x_new) +
                          (!v_new.allFinite() ? ", its velocity not finite"
                           : !inside          ? ", outside the grid"
                                              : ", more than one cell in one step"));
@@ -131,9 +119,7 @@ void update_stress(Model<D, Shape>& model, ParticleBatch<D>& b, const MaterialMo
       material.template update<S>(state, b.stress[p], deps, input);
       if (!std::isfinite(b.stress[p][0] + b.stress[p][1] + b.stress[p][2] + b.stress[p][3] + b.stress[p][4] +
                          b.stress[p][5])) {
-        std::ostringstream where;
-        where << "a particle at (" << b.x[p].transpose() << ") m: its stress is not finite";
-        model.flags.fail(where.str());
+        model.flags.fail("a particle at " + position_text<D>(b.x[p]) + ": its stress is not finite");
       }
       for (int i = 0; i < 6; ++i) b.strain[p][i] += deps[i];
       b.volume[p] *= 1.0 + deps[0] + deps[1] + deps[2];
