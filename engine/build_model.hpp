@@ -15,28 +15,27 @@ namespace flowmpm {
 
 // For a plane node set with material on one side only: the nodes outside
 // within the shape function's reach, each paired with its mirror image
-// inside (see MirrorPlane).
+// inside (see MirrorPlane). `plane_nodes` are the set's nodes.
 template <int D, class Shape>
 std::vector<std::pair<std::size_t, std::size_t>> ghost_mirror_pairs(const Model<D, Shape>& model,
-                                                                     const NodeSetSpec& set) {
+                                                                     const NodeSetSpec& set,
+                                                                     const std::vector<std::size_t>& plane_nodes) {
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
   if (!set.is_plane || Shape::reach_below == 0) return pairs;
   const auto& g = model.grid;
   const int a = set.axis;
-  const int k0 = static_cast<int>(std::lround((set.at - g.origin[a]) * g.inv_h[a]));
   std::size_t below = 0, above = 0;
   for (const auto& b : model.batches) {
     for (const auto& x : b.x) (x[a] < set.at ? below : above) += 1;
   }
   if (below > 0 && above > 0) return pairs;  // inside the material: no ghosts
   const int outward = below == 0 ? -1 : 1;
-  for (std::size_t n = 0; n < g.node_count(); ++n) {
+  for (const std::size_t n : plane_nodes) {
     const Index<D> i = g.node_ijk(n);
-    if (i[a] != k0) continue;
     for (int j = 1; j <= Shape::reach_below; ++j) {
       Index<D> ghost = i, mirror = i;
-      ghost[a] = k0 + outward * j;
-      mirror[a] = k0 - outward * j;
+      ghost[a] = i[a] + outward * j;
+      mirror[a] = i[a] - outward * j;
       if (ghost[a] < 0 || ghost[a] > g.cells[a] || mirror[a] < 0 || mirror[a] > g.cells[a]) continue;
       pairs.emplace_back(g.node_index(ghost), g.node_index(mirror));
     }
@@ -156,7 +155,7 @@ void build_model(const Case& c, Model<D, Shape>& model) {
     for (int d = 0; d < D; ++d) {
       if (set.velocity[d]) model.constraints.push_back({set.name, nodes, d, *set.velocity[d]});
     }
-    auto pairs = ghost_mirror_pairs<D, Shape>(model, set);
+    auto pairs = ghost_mirror_pairs<D, Shape>(model, set, nodes);
     if (!pairs.empty()) model.mirror_planes.push_back({set.name, std::move(pairs), set.velocity});
   }
 
