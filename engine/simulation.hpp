@@ -7,9 +7,9 @@
 #include <string>
 
 #include "engine/build_model.hpp"
+#include "engine/diagnostics.hpp"
 #include "engine/step_graph.hpp"
 #include "io/snapshot.hpp"
-#include "io/timeseries_csv.hpp"
 #include "tasks/g2p.hpp"
 #include "tasks/grid_update.hpp"
 #include "tasks/p2g.hpp"
@@ -98,33 +98,7 @@ class Simulation {
   }
 
   // Energies and volume-weighted mean stress and strain per body.
-  TimeseriesRow diagnostics(std::size_t body_count) const {
-    TimeseriesRow row;
-    row.step = model_.step;
-    row.time = model_.t;
-    row.bodies.resize(body_count);
-    std::vector<double> body_volume(body_count, 0.0);
-    for (const auto& b : model_.batches) {
-      BodyMeans& means = row.bodies[b.body];
-      for (std::size_t p = 0; p < b.size(); ++p) {
-        row.kinetic_energy += 0.5 * b.mass[p] * b.v[p].squaredNorm();
-        // Elastic strain energy density sigma : eps / 2 (small strain).
-        row.strain_energy += 0.5 * b.volume[p] * double_contraction(b.stress[p], b.strain[p]);
-        for (int i = 0; i < 6; ++i) {
-          means.stress[i] += b.volume[p] * b.stress[p][i];
-          means.strain[i] += b.volume[p] * b.strain[p][i];
-        }
-        body_volume[b.body] += b.volume[p];
-      }
-    }
-    for (std::size_t i = 0; i < body_count; ++i) {
-      for (int k = 0; k < 6; ++k) {
-        row.bodies[i].stress[k] /= body_volume[i];
-        row.bodies[i].strain[k] /= body_volume[i];
-      }
-    }
-    return row;
-  }
+  TimeseriesRow diagnostics(std::size_t body_count) const { return flowmpm::diagnostics(model_, body_count); }
 
  private:
   void run_stage(Stage s) {

@@ -8,6 +8,7 @@
 #include <map>
 #include <string>
 
+#include "engine/diagnostics.hpp"
 #include "engine/reference/error_norm.hpp"
 #include "io/case_file.hpp"
 
@@ -17,7 +18,7 @@ struct UniaxialStress {
   int axis;
   double length, v0;
   double E = 0.0, nu = 0.0, t = 0.0;
-  Voigt mean_stress{}, mean_strain{};
+  BodyMeans means;  // of the first body, at the last sample
 
   explicit UniaxialStress(const ReferenceSpec& r) : axis(r.axis), length(r.length), v0(r.velocity) {}
 
@@ -30,31 +31,17 @@ struct UniaxialStress {
 
   template <int D, class Shape>
   void sample(const Model<D, Shape>& model) {
-    const auto& b = model.batches.at(0);
-    double volume = 0.0;
-    mean_stress = {};
-    mean_strain = {};
-    for (std::size_t p = 0; p < b.size(); ++p) {
-      for (int i = 0; i < 6; ++i) {
-        mean_stress[i] += b.volume[p] * b.stress[p][i];
-        mean_strain[i] += b.volume[p] * b.strain[p][i];
-      }
-      volume += b.volume[p];
-    }
-    for (int i = 0; i < 6; ++i) {
-      mean_stress[i] /= volume;
-      mean_strain[i] /= volume;
-    }
+    means = diagnostics(model, model.batches.size()).bodies.at(0);
     t = model.t;
   }
 
   std::map<std::string, double> errors() const {
     const int lateral = axis == 0 ? 1 : 0;
     const double eps_a = v0 * t / length, sigma_a = E * eps_a, eps_l = -nu * eps_a;
-    return {{"axial_stress", std::abs(mean_stress[axis] - sigma_a) / std::abs(sigma_a)},
-            {"lateral_stress", std::abs(mean_stress[lateral]) / std::abs(sigma_a)},
-            {"axial_strain", std::abs(mean_strain[axis] - eps_a) / std::abs(eps_a)},
-            {"lateral_strain", std::abs(mean_strain[lateral] - eps_l) / std::abs(eps_l)}};
+    return {{"axial_stress", std::abs(means.stress[axis] - sigma_a) / std::abs(sigma_a)},
+            {"lateral_stress", std::abs(means.stress[lateral]) / std::abs(sigma_a)},
+            {"axial_strain", std::abs(means.strain[axis] - eps_a) / std::abs(eps_a)},
+            {"lateral_strain", std::abs(means.strain[lateral] - eps_l) / std::abs(eps_l)}};
   }
 };
 
