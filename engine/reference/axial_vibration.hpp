@@ -32,7 +32,7 @@ struct AxialVibration {
       : x_fixed(r.origin), length(r.length), v0(r.velocity), mode(r.mode) {}
 
   template <int D, class Shape>
-  void initialise(Model<D, Shape>& model) {
+  void initialise(Model<D, Shape>& model, double /*end_time*/) {
     const LinearElastic& m = elastic_material(model, "axial_vibration");
     const double c = std::sqrt(m.parameters.youngs_modulus / m.parameters.density);
     beta = (2 * mode - 1) * std::numbers::pi / (2.0 * length);
@@ -48,10 +48,9 @@ struct AxialVibration {
     const double t = model.t;
     for (const auto& b : model.batches) {
       for (std::size_t p = 0; p < b.size(); ++p) {
-        const double shape = std::sin(beta * (b.x0[p][0] - x_fixed));
+        const double X = b.x0[p][0] - x_fixed, shape = std::sin(beta * X);
         displacement.add(b.mass[p], b.x[p][0] - b.x0[p][0] - v0 / omega * shape * std::sin(omega * t));
         velocity.add(b.mass[p], b.v[p][0] - v0 * shape * std::cos(omega * (t - 0.5 * model.dt)));
-        const double X = b.x0[p][0] - x_fixed;
         stress.add(b.mass[p], b.stress[p][0] - stress_amplitude * std::cos(beta * X) * std::sin(omega * t));
       }
     }

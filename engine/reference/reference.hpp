@@ -20,12 +20,7 @@ class Reference {
 
   template <int D, class Shape>
   void initialise(Model<D, Shape>& model, double end_time) {
-    std::visit(
-        [&](auto& s) {
-          if constexpr (requires { s.initialise(model, end_time); }) s.initialise(model, end_time);
-          else s.initialise(model);
-        },
-        solution_);
+    std::visit([&](auto& s) { s.initialise(model, end_time); }, solution_);
   }
   template <int D, class Shape>
   void sample(const Model<D, Shape>& model) {

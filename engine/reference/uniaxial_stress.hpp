@@ -23,7 +23,7 @@ struct UniaxialStress {
   explicit UniaxialStress(const ReferenceSpec& r) : axis(r.axis), length(r.length), v0(r.velocity) {}
 
   template <int D, class Shape>
-  void initialise(Model<D, Shape>& model) {
+  void initialise(Model<D, Shape>& model, double /*end_time*/) {
     const LinearElastic& m = elastic_material(model, "uniaxial_stress");
     E = m.parameters.youngs_modulus;
     nu = m.parameters.poisson_ratio;
