@@ -6,12 +6,12 @@
 
 #include <spdlog/spdlog.h>
 
+#include "engine/reference/reference.hpp"
 #include "engine/shape_bspline.hpp"
 #include "engine/shape_gimp.hpp"
 #include "engine/shape_linear.hpp"
-#include "engine/reference/reference.hpp"
-#include "io/case_reader.hpp"
 #include "engine/simulation.hpp"
+#include "io/case_reader.hpp"
 #include "io/results_h5.hpp"
 #include "io/xdmf.hpp"
 

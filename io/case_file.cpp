@@ -82,8 +82,9 @@ std::string apply_override(toml::table& root, const std::string& assignment) {
   return dotted;
 }
 
-Vec3 vector_of(TableReader& t, std::string_view key, int dim, Vec3 fallback = {}) {
-  if (!t.has(key)) return fallback;
+// An array of `dim` numbers; zeros when the key is absent.
+Vec3 vector_of(TableReader& t, std::string_view key, int dim) {
+  if (!t.has(key)) return {};
   const std::vector<double> values = t.numbers(key, static_cast<std::size_t>(dim));
   Vec3 v{};
   for (int d = 0; d < dim; ++d) v[d] = values[d];
@@ -219,8 +220,7 @@ void read_body(TableReader t, Case& c, std::size_t index) {
   if (t.has("material_axes")) {
     t.require(c.dimension > 1, "material_axes", "no material axes in 1D");
     // 2D: one angle about z; 3D: angles about z, y and x (R = Rz Ry Rx).
-    const Vec3 angles = vector_of(t, "material_axes", c.dimension == 2 ? 1 : 3);
-    b.material_axes = angles;
+    b.material_axes = vector_of(t, "material_axes", c.dimension == 2 ? 1 : 3);
   }
   if (t.has("material_axes_center")) {
     t.require(c.dimension > 1, "material_axes_center", "no material axes in 1D");
