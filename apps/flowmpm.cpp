@@ -200,7 +200,7 @@ int main(int argc, char** argv) {
     }
     if (s.energy_initial > 0.0) {
       spdlog::info("energy (kinetic + strain): {:.6g} J at the start, {:.6g} J at the end, drift {:+.3g} %",
-                   s.energy_initial, s.energy_final, 100.0 * (s.energy_final - s.energy_initial) / s.energy_initial);
+                   s.energy_initial, s.energy_final, 100.0 * s.energy_drift());
     }
     for (const auto& [name, value] : s.errors) {
       spdlog::info("error against the {} reference: {} = {:.4g}", c.reference.type, name, value);

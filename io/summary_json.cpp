@@ -57,8 +57,7 @@ std::string summary_json(const RunSummary& s) {
   field("particle_steps_per_second", number(s.particle_steps_per_second));
   field("energy_initial", number(s.energy_initial));
   field("energy_final", number(s.energy_final));
-  field("energy_drift", number(s.energy_initial > 0.0 ? (s.energy_final - s.energy_initial) / s.energy_initial
-                                                      : std::numeric_limits<double>::quiet_NaN()));
+  field("energy_drift", number(s.energy_drift()));
 
   out += "  \"bodies\": [";
   for (std::size_t i = 0; i < s.bodies.size(); ++i) {

@@ -4,6 +4,7 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -32,6 +33,11 @@ struct RunSummary {
   // Kinetic plus strain energy (J) at the start and the end; their relative
   // change is the energy drift where no external work is done.
   double energy_initial = 0.0, energy_final = 0.0;
+  // (final - initial) / initial; NaN when the run starts without energy.
+  double energy_drift() const {
+    return energy_initial > 0.0 ? (energy_final - energy_initial) / energy_initial
+                                : std::numeric_limits<double>::quiet_NaN();
+  }
   std::vector<BodySummary> bodies;
   // Error norms against a reference solution, by name (empty without one).
   std::map<std::string, double> errors;
