@@ -1,10 +1,9 @@
 #include "io/summary_json.hpp"
 
-#include <charconv>
 #include <cmath>
-#include <limits>
 
 #include "io/atomic_file.hpp"
+#include "io/number_text.hpp"
 #include "io/quoted_string.hpp"
 
 namespace flowmpm {
@@ -12,14 +11,7 @@ namespace {
 
 // 17 significant digits (every double reads back exactly); JSON has no NaN
 // or infinity, so those are written as null.
-std::string number(double value) {
-  if (!std::isfinite(value)) return "null";
-  char buffer[32];
-  const auto result =
-      std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, 17);
-  return std::string(buffer, result.ptr);
-}
-
+std::string number(double value) { return std::isfinite(value) ? exact_text(value) : "null"; }
 
 // {"xx": ..., "yy": ..., "zz": ..., "yz": ..., "xz": ..., "xy": ...}
 std::string voigt(const std::array<double, 6>& values) {

@@ -1,20 +1,14 @@
 #include "io/timeseries_csv.hpp"
 
 #include <cerrno>
-#include <charconv>
 #include <cstring>
 #include <stdexcept>
+
+#include "io/number_text.hpp"
 
 namespace flowmpm {
 namespace {
 
-// 17 significant digits: every double reads back exactly.
-void append_number(std::string& out, double value) {
-  char buffer[32];
-  const auto result =
-      std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, 17);
-  out.append(buffer, result.ptr);
-}
 
 // Quotes a header field that holds a comma, quote or line break (RFC 4180).
 std::string csv_field(const std::string& text) {
@@ -69,17 +63,17 @@ void TimeseriesCsv::write(const TimeseriesRow& row) {
   std::string line = std::to_string(row.step);
   for (const double value : {row.time, row.kinetic_energy, row.strain_energy}) {
     line += ',';
-    append_number(line, value);
+    append_exact(line, value);
   }
   for (const BodyMeans& body : row.bodies)
     for (const auto* values : {&body.stress, &body.strain})
       for (const double value : *values) {
         line += ',';
-        append_number(line, value);
+        append_exact(line, value);
       }
   for (const double value : row.errors) {
     line += ',';
-    append_number(line, value);
+    append_exact(line, value);
   }
   line += '\n';
   errno = 0;

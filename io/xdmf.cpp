@@ -1,20 +1,12 @@
 #include "io/xdmf.hpp"
 
-#include <charconv>
 #include <stdexcept>
 
 #include "io/atomic_file.hpp"
+#include "io/number_text.hpp"
 
 namespace flowmpm {
 namespace {
-
-// 17 significant digits: every double reads back exactly.
-std::string number(double value) {
-  char buffer[32];
-  const auto result =
-      std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, 17);
-  return std::string(buffer, result.ptr);
-}
 
 std::string xml_escape(const std::string& text) {
   std::string out;
@@ -80,7 +72,7 @@ std::string xdmf_document(const std::string& h5_name, const ResultsH5& results) 
     };
     out += "      <Grid Name=\"step_" + group.substr(group.rfind('/') + 1) +
            "\" GridType=\"Uniform\">\n";
-    out += "        <Time Value=\"" + number(step.time) + "\"/>\n";
+    out += "        <Time Value=\"" + exact_text(step.time) + "\"/>\n";
     out += "        <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" + count +
            "\" NodesPerElement=\"1\"/>\n";
     out += "        <Geometry GeometryType=\"XYZ\">\n";
