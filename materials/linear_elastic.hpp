@@ -7,6 +7,7 @@
 
 #include "engine/types.hpp"
 #include "materials/material_input.hpp"
+#include "materials/lame.hpp"
 #include "materials/stress_state.hpp"
 
 namespace flowmpm {
@@ -29,9 +30,8 @@ struct LinearElastic {
 
   explicit LinearElastic(const Parameters& p)
       : parameters(p),
-        lambda(p.youngs_modulus * p.poisson_ratio /
-               ((1.0 + p.poisson_ratio) * (1.0 - 2.0 * p.poisson_ratio))),
-        mu(p.youngs_modulus / (2.0 * (1.0 + p.poisson_ratio))) {}
+        lambda(lame_lambda(p.youngs_modulus, p.poisson_ratio)),
+        mu(lame_mu(p.youngs_modulus, p.poisson_ratio)) {}
 
   // Reads and validates [materials.NAME] (type = "linear_elastic").
   static LinearElastic read(TableReader& table);

@@ -33,6 +33,7 @@
 #include "engine/types.hpp"
 #include "materials/material_input.hpp"
 #include "materials/rotation.hpp"
+#include "materials/lame.hpp"
 #include "materials/stress_state.hpp"
 
 namespace flowmpm {
@@ -65,8 +66,8 @@ struct VonMises {
 
   explicit VonMises(const Parameters& p)
       : parameters(p),
-        lambda(p.youngs_modulus * p.poisson_ratio / ((1.0 + p.poisson_ratio) * (1.0 - 2.0 * p.poisson_ratio))),
-        mu(p.youngs_modulus / (2.0 * (1.0 + p.poisson_ratio))),
+        lambda(lame_lambda(p.youngs_modulus, p.poisson_ratio)),
+        mu(lame_mu(p.youngs_modulus, p.poisson_ratio)),
         K(lambda + 2.0 * mu / 3.0) {}
 
   // Reads and validates [materials.NAME] (type = "von_mises").
