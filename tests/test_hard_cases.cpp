@@ -14,15 +14,9 @@ using namespace flowmpm;
 
 namespace {
 
-RunSummary run(const Case& c, bool write = false) {
-  RunOptions options;
-  options.write_results = write;
-  return run_case(c, options);
-}
-
 std::string message_of(const Case& c, bool write = false) {
   try {
-    run(c, write);
+    testing::run(c, write);
   } catch (const SimulationError& e) {
     return e.what();
   }
@@ -94,7 +88,7 @@ TEST_CASE("(c) nearly incompressible elasticity, nu = 0.49: stable and accurate"
   // The column of test_verification with nu = 0.49: measured 0.52 %.
   for (std::string shape : {"linear", "bspline2"}) {
     CAPTURE(shape);
-    const auto s = run(read_case(testing::config("hard/incompressible_column.toml"),
+    const auto s = testing::run(read_case(testing::config("hard/incompressible_column.toml"),
                                  {"analysis.shape_function=" + shape}));
     CHECK(s.errors.at("displacement") < 0.01);
   }
@@ -105,12 +99,12 @@ TEST_CASE("(d) two elastic blocks colliding: energy drift bounded with uGIMP and
   // Measured drift: uGIMP FLIP +0.6 %; linear FLIP -22 % (cell-crossing
   // noise); PIC loses 17-83 %, more than FLIP for every shape function.
   const Case gimp = read_case(testing::config("hard/impact_2d.toml"));
-  const RunSummary flip = run(gimp);
+  const RunSummary flip = testing::run(gimp);
   CHECK(std::abs(flip.energy_drift()) < 0.03);
   for (std::string shape : {"linear", "gimp", "bspline2"}) {
     CAPTURE(shape);
     auto drift_of = [&](const std::string& update) {
-      const RunSummary s = run(read_case(testing::config("hard/impact_2d.toml"),
+      const RunSummary s = testing::run(read_case(testing::config("hard/impact_2d.toml"),
                                          {"analysis.shape_function=" + shape, "analysis.velocity_update=" + update}));
       return s.energy_drift();
     };

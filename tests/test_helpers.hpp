@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/run_case.hpp"
 #include "io/case_file.hpp"
 
 namespace flowmpm::testing {
@@ -21,6 +22,13 @@ inline Case case_from_text(const std::string& name, const std::string& text,
   const auto file = dir / (name + ".toml");
   std::ofstream(file) << text;
   return read_case(file, overrides);
+}
+
+// Runs a case in this process; results are written only if `write`.
+inline RunSummary run(const Case& c, bool write = false) {
+  RunOptions options;
+  options.write_results = write;
+  return run_case(c, options);
 }
 
 }  // namespace flowmpm::testing

@@ -36,9 +36,7 @@ struct Result {
 Result run(int case_number, const std::string& scheme) {
   const Case c = read_case(
       testing::config("uniaxial_stress/case" + std::to_string(case_number) + "_" + scheme + ".toml"));
-  RunOptions options;
-  options.write_results = false;
-  const RunSummary s = run_case(c, options);
+  const RunSummary s = testing::run(c);
   REQUIRE(s.steps == (case_number == 1 ? 10 : 100));
   REQUIRE(s.end_time == doctest::Approx(0.1).epsilon(1e-12));
   const auto& b = s.bodies.at(0);

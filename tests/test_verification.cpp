@@ -27,10 +27,7 @@ using namespace flowmpm;
 namespace {
 
 std::map<std::string, double> errors_of(const std::string& config, std::vector<std::string> overrides) {
-  const Case c = read_case(testing::config(config), overrides);
-  RunOptions options;
-  options.write_results = false;
-  const RunSummary s = run_case(c, options);
+  const RunSummary s = testing::run(read_case(testing::config(config), overrides));
   REQUIRE(s.status == "completed");
   return s.errors;
 }
