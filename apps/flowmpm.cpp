@@ -153,11 +153,10 @@ int main(int argc, char** argv) {
                                         : static_cast<int>(tbb::info::default_concurrency());
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
 
-  if (args.command == "sweep") {
-    std::signal(SIGINT, on_signal);
-    std::signal(SIGTERM, on_signal);
-    return sweep(args, threads);
-  }
+  // Ctrl-C or a termination request: finish the current step, keep results.
+  std::signal(SIGINT, on_signal);
+  std::signal(SIGTERM, on_signal);
+  if (args.command == "sweep") return sweep(args, threads);
 
   flowmpm::Case c;
   const auto read_start = std::chrono::steady_clock::now();
@@ -178,8 +177,6 @@ int main(int argc, char** argv) {
     return 1;
   }
 
-  std::signal(SIGINT, on_signal);
-  std::signal(SIGTERM, on_signal);
   flowmpm::RunOptions options;
   options.threads = threads;
   options.interrupt = &interrupted;
