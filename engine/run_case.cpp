@@ -191,7 +191,7 @@ RunSummary run(const Case& c, const RunOptions& options) {
   try {
     while (!done()) {
       if (options.interrupt && options.interrupt->load()) {
-        write_output();
+        if (model.step != last_written) write_output();
         finish("interrupted at step " + std::to_string(model.step));
         throw SimulationError("interrupted at step " + std::to_string(model.step) + " (t = " +
                               std::to_string(model.t) + " s); results up to this step are written");

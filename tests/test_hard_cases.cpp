@@ -6,6 +6,10 @@
 
 #include <hdf5.h>
 
+#include <atomic>
+#include <fstream>
+#include <iterator>
+
 #include "engine/run_case.hpp"
 #include "engine/simulation.hpp"
 #include "test_helpers.hpp"
@@ -120,4 +124,21 @@ TEST_CASE("(e) particles leaving the grid stop the run with a clear error, not a
   CHECK(message.find("outside the grid") != std::string::npos);
   CHECK(message.find("a particle at (") != std::string::npos);
   CHECK(message.find("step ") == 0);
+}
+
+TEST_CASE("an interrupted run stops after its step, keeps what it wrote and says so in the summary") {
+  // The interrupt lands on a step that is already an output step (here
+  // step 0): it must not be written twice (HDF5 refuses a second group).
+  const auto dir = std::filesystem::temp_directory_path() / "flowmpm-tests" / "interrupted";
+  std::filesystem::remove_all(dir);
+  Case c = read_case(testing::config("verification/bar_vibration_small.toml"), {"output.every=1"});
+  c.output.directory = dir;
+  const std::atomic<bool> interrupt{true};
+  RunOptions options;
+  options.interrupt = &interrupt;
+  CHECK_THROWS_WITH_AS(run_case(c, options), doctest::Contains("interrupted at step 0"), SimulationError);
+  std::ifstream summary(dir / "summary.json");
+  const std::string text((std::istreambuf_iterator<char>(summary)), std::istreambuf_iterator<char>());
+  CHECK(text.find("\"status\": \"interrupted at step 0\"") != std::string::npos);
+  CHECK(std::filesystem::exists(dir / "results.h5"));
 }
