@@ -1,5 +1,6 @@
 // Throughput of the explicit step: a 3D linear-elastic block resting on a
-// fixed base under gravity (USL, linear shape functions, FLIP), at several
+// fixed base under gravity (USL, FLIP; linear shape functions unless
+// --shape names another), at several
 // sizes, with 1 and 2 threads. Reports, per size, the median over repeats of
 //   - particle-steps per second through the flow graph, 1 and 2 threads,
 //     and the 2-thread speedup;
@@ -14,8 +15,9 @@
 //     microseconds per particle, apart from the step rate.
 // Output steps are not part of this program (see README, output cost).
 //
-//   build/bench/bench_throughput [--sizes 1e4,1e5,1e6] [--steps-per-size N]
-//                                [--repeats R] [--csv FILE]
+//   build/bench/bench_throughput [--sizes 1e4,1e5,1e6] [--particle-steps N]
+//                                [--repeats R] [--shape linear|gimp|bspline2|bspline3]
+//                                [--csv FILE]
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -29,6 +31,8 @@
 
 #include <tbb/global_control.h>
 
+#include "engine/shape_bspline.hpp"
+#include "engine/shape_gimp.hpp"
 #include "engine/shape_linear.hpp"
 #include "engine/simulation.hpp"
 #include "io/results_h5.hpp"
@@ -39,17 +43,19 @@ using Clock = std::chrono::steady_clock;
 namespace {
 
 // The block: k x k x k cells of 8 particles each (2 per axis), resting on
-// the plane of nodes one cell above the grid's bottom, which is held fixed.
-Case block_case(std::size_t target_particles) {
+// the plane of nodes two cells above the grid's bottom, which is held fixed
+// (two cells of grid around the block leave room for every shape function).
+Case block_case(std::size_t target_particles, const std::string& shape) {
   const int k = std::max(2, static_cast<int>(std::lround(std::cbrt(target_particles / 8.0))));
   const double h = 1.0 / k;  // a 1 m cube
   Case c;
   c.name = "bench_block";
   c.dimension = 3;
   c.scheme = Scheme::usl;
-  c.grid.origin = {-h, -h, -h};
+  c.shape_function = shape;
+  c.grid.origin = {-2 * h, -2 * h, -2 * h};
   c.grid.cell_size = {h, h, h};
-  c.grid.cells = {k + 2, k + 3, k + 2};
+  c.grid.cells = {k + 4, k + 5, k + 4};
   c.gravity = {0.0, -9.81, 0.0};
   c.materials.push_back({"elastic", LinearElastic(LinearElastic::Parameters{1000.0, 1e7, 0.3})});
   BodySpec body;
@@ -86,8 +92,9 @@ double median(std::vector<double> v) {
 
 // Cost of one output step: the particle snapshot written to results.h5
 // (all fields), in bytes and seconds per particle.
+template <class Shape>
 std::pair<double, double> output_cost(const Case& c) {
-  Simulation<3, LinearShape> sim(c);
+  Simulation<3, Shape> sim(c);
   const auto dir = std::filesystem::temp_directory_path() / "flowmpm-bench-output";
   std::filesystem::create_directories(dir);
   const auto start = Clock::now();
@@ -110,10 +117,11 @@ struct Timing {
   std::int64_t sorts = 0;
 };
 
+template <class Shape>
 Timing time_steps(const Case& c, int threads, bool serial, int steps) {
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
   const auto t0 = Clock::now();
-  Simulation<3, LinearShape> sim(c);
+  Simulation<3, Shape> sim(c);
   Timing t;
   t.setup = std::chrono::duration<double>(Clock::now() - t0).count();
   t.particles = sim.model().particle_count();
@@ -126,6 +134,26 @@ Timing time_steps(const Case& c, int threads, bool serial, int steps) {
   for (int i = 0; i < stage_count; ++i) t.stage_share[i] = (sim.graph().stage_seconds()[i] - before[i]) / seconds;
   t.sorts = sim.model().sorts;
   return t;
+}
+
+// The bench's two measurements, compiled for one shape function.
+struct ShapeRunner {
+  Timing (*time_steps)(const Case&, int threads, bool serial, int steps);
+  std::pair<double, double> (*output_cost)(const Case&);
+};
+
+template <class Shape>
+ShapeRunner runner_for() {
+  return {&time_steps<Shape>, &output_cost<Shape>};
+}
+
+ShapeRunner runner_named(const std::string& shape) {
+  if (shape == "linear") return runner_for<LinearShape>();
+  if (shape == "gimp") return runner_for<GimpShape>();
+  if (shape == "bspline2") return runner_for<QuadraticBSpline>();
+  if (shape == "bspline3") return runner_for<CubicBSpline>();
+  std::cerr << "--shape: expected linear, gimp, bspline2 or bspline3, got '" << shape << "'\n";
+  std::exit(1);
 }
 
 std::vector<double> parse_sizes(const std::string& text) {
@@ -141,7 +169,7 @@ int main(int argc, char** argv) {
   std::vector<double> sizes{1e4, 1e5, 1e6};
   double particle_steps = 3e7;  // per measurement, so that each lasts ~1 s or more
   int repeats = 3;
-  std::string csv_path;
+  std::string csv_path, shape = "linear";
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto next = [&] {
@@ -154,15 +182,17 @@ int main(int argc, char** argv) {
     if (a == "--sizes") sizes = parse_sizes(next());
     else if (a == "--particle-steps") particle_steps = std::stod(next());
     else if (a == "--repeats") repeats = std::stoi(next());
+    else if (a == "--shape") shape = next();
     else if (a == "--csv") csv_path = next();
     else {
-      std::cerr << "usage: bench_throughput [--sizes 1e4,1e5,1e6] [--particle-steps 3e7] [--repeats 3] [--csv FILE]\n";
+      std::cerr << "usage: bench_throughput [--sizes 1e4,1e5,1e6] [--particle-steps 3e7] [--repeats 3] [--shape linear] [--csv FILE]\n";
       return a == "--help" ? 0 : 1;
     }
   }
 
-  std::printf("3D elastic block on a fixed base under gravity, USL, linear shape functions; medians of %d runs\n",
-              repeats);
+  const ShapeRunner runner = runner_named(shape);
+  std::printf("3D elastic block on a fixed base under gravity, USL, %s shape functions; medians of %d runs\n",
+              shape.c_str(), repeats);
   std::printf("%10s %6s %10s %10s %8s %10s %8s %9s %9s %9s %8s %8s  %s\n", "particles", "steps", "1 thr", "2 thr",
               "speedup", "serial 1t", "graph", "setup", "B/p peak", "B/p model", "output", "output",
               "stage shares at 1 thread");
@@ -177,7 +207,7 @@ int main(int argc, char** argv) {
     csv << "\n";
   }
   for (double size : sizes) {
-    const Case c = block_case(static_cast<std::size_t>(size));
+    const Case c = block_case(static_cast<std::size_t>(size), shape);
     std::size_t n = 0;
     std::vector<double> r1, r2, rs, setup;
     std::array<std::vector<double>, stage_count> shares;
@@ -185,9 +215,9 @@ int main(int argc, char** argv) {
     const std::size_t rss_before = resident_kib("VmRSS:");
     reset_peak_resident();
     for (int r = 0; r < repeats; ++r) {
-      const Timing serial = time_steps(c, 1, true, steps);
-      const Timing one = time_steps(c, 1, false, steps);
-      const Timing two = time_steps(c, 2, false, steps);
+      const Timing serial = runner.time_steps(c, 1, true, steps);
+      const Timing one = runner.time_steps(c, 1, false, steps);
+      const Timing two = runner.time_steps(c, 2, false, steps);
       n = one.particles;
       rs.push_back(serial.rate);
       r1.push_back(one.rate);
@@ -196,7 +226,7 @@ int main(int argc, char** argv) {
       for (int i = 0; i < stage_count; ++i) shares[i].push_back(one.stage_share[i]);
     }
     const double peak = 1024.0 * resident_kib("VmHWM:");
-    const auto [out_bytes, out_seconds] = output_cost(c);
+    const auto [out_bytes, out_seconds] = runner.output_cost(c);
     const double bpp_peak = peak / n, bpp_model = (peak - 1024.0 * rss_before) / n;
     const double m1 = median(r1), m2 = median(r2), ms = median(rs);
     std::ostringstream stage_text;
