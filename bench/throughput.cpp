@@ -9,7 +9,8 @@
 //   - set-up time (particles generated and sorted) per million particles;
 //   - peak resident memory per particle (whole process, and above the
 //     resident memory before the model was built);
-//   - the share of each stage in the 1-thread step (the rest: sorting and
+//   - the share of each node of the step graph in the 1-thread step (the
+//     rest: sorting and
 //     the time loop);
 //   - the cost of one output step (all fields to results.h5), in bytes and
 //     microseconds per particle, apart from the step rate.
@@ -111,7 +112,7 @@ std::pair<double, double> output_cost(const Case& c) {
 
 struct Timing {
   double rate = 0.0;  // particle-steps per second
-  std::array<double, stage_count> stage_share{};
+  std::vector<double> node_share;  // per node of the wiring
   double setup = 0.0;  // s
   std::size_t particles = 0;
   std::int64_t sorts = 0;
@@ -126,12 +127,13 @@ Timing time_steps(const Case& c, int threads, bool serial, int steps) {
   t.setup = std::chrono::duration<double>(Clock::now() - t0).count();
   t.particles = sim.model().particle_count();
   for (int s = 0; s < 2; ++s) serial ? sim.advance_serial() : sim.advance();  // warm-up
-  const auto before = sim.graph().stage_seconds();
+  const auto before = sim.graph().node_seconds();
   const auto start = Clock::now();
   for (int s = 0; s < steps; ++s) serial ? sim.advance_serial() : sim.advance();
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
   t.rate = static_cast<double>(t.particles) * steps / seconds;
-  for (int i = 0; i < stage_count; ++i) t.stage_share[i] = (sim.graph().stage_seconds()[i] - before[i]) / seconds;
+  for (std::size_t i = 0; i < before.size(); ++i)
+    t.node_share.push_back((sim.graph().node_seconds()[i] - before[i]) / seconds);
   t.sorts = sim.model().sorts;
   return t;
 }
@@ -191,11 +193,12 @@ int main(int argc, char** argv) {
   }
 
   const ShapeRunner runner = runner_named(shape);
+  const std::vector<StageGroup> nodes = wiring_of(Scheme::usl).nodes;
   std::printf("3D elastic block on a fixed base under gravity, USL, %s shape functions; medians of %d runs\n",
               shape.c_str(), repeats);
   std::printf("%10s %6s %10s %10s %8s %10s %8s %9s %9s %9s %8s %8s  %s\n", "particles", "steps", "1 thr", "2 thr",
               "speedup", "serial 1t", "graph", "setup", "B/p peak", "B/p model", "output", "output",
-              "stage shares at 1 thread");
+              "shares of the graph's nodes at 1 thread");
   std::printf("%10s %6s %10s %10s %8s %10s %8s %9s %9s %9s %8s %8s\n", "", "", "Mp-st/s", "Mp-st/s", "", "Mp-st/s",
               "overhead", "s/Mp", "", "", "B/p", "us/p");
   std::ofstream csv;
@@ -203,14 +206,14 @@ int main(int argc, char** argv) {
     csv.open(csv_path);
     csv << "particles,steps,rate_1t,rate_2t,speedup,rate_serial_1t,graph_overhead,setup_s_per_million,"
            "bytes_per_particle_peak,bytes_per_particle_model,output_bytes_per_particle,output_seconds_per_particle";
-    for (int i = 0; i < stage_count; ++i) csv << ",share_" << stage_name(static_cast<Stage>(i));
+    for (const StageGroup& node : nodes) csv << ",share_" << group_name(node);
     csv << "\n";
   }
   for (double size : sizes) {
     const Case c = block_case(static_cast<std::size_t>(size), shape);
     std::size_t n = 0;
     std::vector<double> r1, r2, rs, setup;
-    std::array<std::vector<double>, stage_count> shares;
+    std::vector<std::vector<double>> shares(nodes.size());
     const int steps = std::max(5, static_cast<int>(particle_steps / size));
     const std::size_t rss_before = resident_kib("VmRSS:");
     reset_peak_resident();
@@ -223,16 +226,15 @@ int main(int argc, char** argv) {
       r1.push_back(one.rate);
       r2.push_back(two.rate);
       setup.push_back(one.setup);
-      for (int i = 0; i < stage_count; ++i) shares[i].push_back(one.stage_share[i]);
+      for (std::size_t i = 0; i < nodes.size(); ++i) shares[i].push_back(one.node_share[i]);
     }
     const double peak = 1024.0 * resident_kib("VmHWM:");
     const auto [out_bytes, out_seconds] = runner.output_cost(c);
     const double bpp_peak = peak / n, bpp_model = (peak - 1024.0 * rss_before) / n;
     const double m1 = median(r1), m2 = median(r2), ms = median(rs);
     std::ostringstream stage_text;
-    for (int i = 0; i < stage_count; ++i) {
-      const double share = median(shares[i]);
-      if (share > 0.0) stage_text << stage_name(static_cast<Stage>(i)) << " " << std::lround(100 * share) << "% ";
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      stage_text << "[" << group_name(nodes[i]) << "] " << std::lround(100 * median(shares[i])) << "% ";
     }
     std::printf("%10zu %6d %10.2f %10.2f %8.2f %10.2f %7.1f%% %9.3f %9.0f %9.0f %8.0f %8.3f  %s\n", n, steps,
                 m1 / 1e6, m2 / 1e6, m2 / m1, ms / 1e6, 100.0 * (ms / m1 - 1.0), median(setup) / (n / 1e6), bpp_peak,
@@ -242,7 +244,7 @@ int main(int argc, char** argv) {
       csv << n << "," << steps << "," << m1 << "," << m2 << "," << m2 / m1 << "," << ms << "," << (ms / m1 - 1.0)
           << "," << median(setup) / (n / 1e6) << "," << bpp_peak << "," << bpp_model << "," << out_bytes << ","
           << out_seconds;
-      for (int i = 0; i < stage_count; ++i) csv << "," << median(shares[i]);
+      for (const auto& share : shares) csv << "," << median(share);
       csv << "\n";
     }
   }

@@ -25,11 +25,12 @@ class SimulationError : public std::runtime_error {
 template <int D, class Shape>
 class Simulation {
  public:
-  // `observer`, if given, is called as each stage starts (from any thread).
+  // `observer`, if given, is called as each stage starts (from any thread;
+  // for the stages of one node, in their order, as the node starts).
   explicit Simulation(const Case& c, std::function<void(Stage)> observer = {})
       : fixed_dt_(c.dt_auto ? 0.0 : c.dt),
         observer_(std::move(observer)),
-        graph_(wiring_of(c.scheme), [this](Stage s) { run_stage(s); }) {
+        graph_(wiring_of(c.scheme), [this](const StageGroup& stages) { run_node(stages); }) {
     build_model(c, model_);
   }
 
@@ -101,9 +102,14 @@ class Simulation {
   TimeseriesRow diagnostics(std::size_t body_count) const { return flowmpm::diagnostics(model_, body_count); }
 
  private:
-  void run_stage(Stage s) {
-    if (observer_) observer_(s);
-    switch (s) {
+  void run_node(const StageGroup& stages) {
+    if (observer_)
+      for (Stage s : stages) observer_(s);
+    using S = Stage;
+    if (stages == StageGroup{S::p2g_momentum, S::p2g_force}) return p2g_momentum_and_force(model_);
+    if (stages == StageGroup{S::g2p_motion, S::g2p_stress}) return g2p_motion_and_stress(model_);
+    if (stages.size() != 1) throw std::logic_error("no single pass runs the stages " + group_name(stages));
+    switch (stages.front()) {
       case Stage::p2g_momentum: p2g_momentum(model_); break;
       case Stage::p2g_force: p2g_force(model_); break;
       case Stage::grid_velocity: grid_velocity(model_); break;

@@ -17,10 +17,16 @@ const char* stage_name(Stage s) {
   return "?";
 }
 
+std::string group_name(const StageGroup& group) {
+  std::string name;
+  for (Stage s : group) name += (name.empty() ? "" : " & ") + std::string(stage_name(s));
+  return name;
+}
+
 namespace {
 
-// A chain of stages; `heads` all feed the first element of `chain`.
-Wiring chain(std::vector<Stage> heads, std::vector<Stage> chain) {
+// A chain of nodes; `heads` all feed the first element of `chain`.
+Wiring chain(std::vector<StageGroup> heads, std::vector<StageGroup> chain) {
   Wiring w;
   w.nodes = heads;
   const int first = static_cast<int>(w.nodes.size());
@@ -36,14 +42,14 @@ Wiring wiring_of(Scheme scheme) {
   using S = Stage;
   switch (scheme) {
     case Scheme::usf:
-      return chain({S::p2g_momentum},
-                   {S::grid_velocity, S::g2p_stress, S::p2g_force, S::grid_integrate, S::g2p_motion});
+      return chain({{S::p2g_momentum}},
+                   {{S::grid_velocity}, {S::g2p_stress}, {S::p2g_force}, {S::grid_integrate}, {S::g2p_motion}});
     case Scheme::usl:
-      return chain({S::p2g_momentum, S::p2g_force},
-                   {S::grid_velocity, S::grid_integrate, S::g2p_motion, S::g2p_stress});
+      return chain({{S::p2g_momentum, S::p2g_force}},
+                   {{S::grid_velocity}, {S::grid_integrate}, {S::g2p_motion, S::g2p_stress}});
     case Scheme::musl:
-      return chain({S::p2g_momentum, S::p2g_force}, {S::grid_velocity, S::grid_integrate, S::g2p_motion,
-                                                     S::remap, S::grid_velocity, S::g2p_stress});
+      return chain({{S::p2g_momentum, S::p2g_force}}, {{S::grid_velocity}, {S::grid_integrate}, {S::g2p_motion},
+                                                       {S::remap}, {S::grid_velocity}, {S::g2p_stress}});
   }
   throw std::logic_error("unknown scheme");
 }
@@ -73,17 +79,20 @@ std::string Wiring::describe() const {
   std::string text;
   for (int i : topological_order()) {
     if (!text.empty()) text += has_predecessor[i] ? " -> " : " + ";
-    text += stage_name(nodes[i]);
+    text += group_name(nodes[i]);
   }
   return text;
 }
 
-StepGraph::StepGraph(Wiring wiring, StageFunction run_stage)
-    : wiring_(std::move(wiring)), run_stage_(std::move(run_stage)), start_(graph_) {
-  for (Stage s : wiring_.nodes) {
+StepGraph::StepGraph(Wiring wiring, StageFunction run_stages)
+    : wiring_(std::move(wiring)),
+      run_stages_(std::move(run_stages)),
+      node_seconds_(wiring_.nodes.size(), 0.0),
+      start_(graph_) {
+  for (int node = 0; node < static_cast<int>(wiring_.nodes.size()); ++node) {
     nodes_.push_back(std::make_unique<tbb::flow::continue_node<tbb::flow::continue_msg>>(
-        graph_, [this, s](const tbb::flow::continue_msg&) {
-          timed(s);
+        graph_, [this, node](const tbb::flow::continue_msg&) {
+          timed(node);
           return tbb::flow::continue_msg();
         }));
   }
@@ -96,11 +105,10 @@ StepGraph::StepGraph(Wiring wiring, StageFunction run_stage)
     if (!has_predecessor[i]) tbb::flow::make_edge(start_, *nodes_[i]);
 }
 
-void StepGraph::timed(Stage s) {
+void StepGraph::timed(int node) {
   const auto begin = std::chrono::steady_clock::now();
-  run_stage_(s);
-  stage_seconds_[static_cast<int>(s)] +=
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+  run_stages_(wiring_.nodes[node]);
+  node_seconds_[node] += std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
 }
 
 void StepGraph::run() {
@@ -109,7 +117,7 @@ void StepGraph::run() {
 }
 
 void StepGraph::run_serial() {
-  for (int i : wiring_.topological_order()) timed(wiring_.nodes[i]);
+  for (int i : wiring_.topological_order()) timed(i);
 }
 
 }  // namespace flowmpm

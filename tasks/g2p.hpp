@@ -4,8 +4,10 @@
 //             with v_I the velocity after grid_integrate.
 // g2p_stress: L_p = sum_I v_I (x) dN_Ip, d eps = sym(L_p) dt, the material
 //             update sigma(d eps), eps += d eps, V_p *= 1 + tr(d eps).
-// Stages after g2p_motion in the same step (USL stress, MUSL remap)
-// evaluate N and dN at the updated positions.
+// USL does both in one pass over the particles, with N and dN at the
+// positions of the start of the step: the stencil of the step's p2g, as in
+// CB-Geo mpm. MUSL's g2p_stress follows the remap, so it and the remap see
+// the updated positions.
 #pragma once
 #include <atomic>
 #include <cmath>
@@ -30,123 +32,151 @@ int drift_from_block(const Index<D>& c, const Index<D>& block) {
   return drift;
 }
 
-}  // namespace detail
+// The material update of particle p for its velocity gradient L (g2p_stress).
+template <int D, class Shape, StressState S, class MaterialModel>
+void update_particle_stress(Model<D, Shape>& model, ParticleBatch<D>& b, std::size_t p, const double (&L)[D][D],
+                            const MaterialModel& material, typename MaterialModel::State& state) {
+  const double dt = model.dt;
+  Voigt deps{};
+  for (int i = 0; i < D; ++i)
+    for (int j = i; j < D; ++j) deps[voigt_slot(i, j)] = 0.5 * (L[i][j] + L[j][i]) * dt;
+  MaterialInput input;
+  input.t = model.t + dt;
+  input.dt = dt;
+  input.length = b.particle_length;
+  for (int i = 0; i < D; ++i)
+    for (int j = 0; j < D; ++j) input.dL(i, j) = L[i][j] * dt;
+  material.template update<S>(state, b.stress[p], deps, input);
+  if (!std::isfinite(b.stress[p][0] + b.stress[p][1] + b.stress[p][2] + b.stress[p][3] + b.stress[p][4] +
+                     b.stress[p][5])) {
+    model.flags.fail("a particle at " + position_text<D>(b.x[p]) + ": its stress is not finite");
+  }
+  for (int i = 0; i < 6; ++i) b.strain[p][i] += deps[i];
+  b.volume[p] *= 1.0 + deps[0] + deps[1] + deps[2];
+}
 
-template <int D, class Shape>
-void g2p_motion(Model<D, Shape>& model) {
+// Calls f(update) with update(p, L) the material update of `b`'s particles:
+// one dispatch on the material and the stress state per call, none per
+// particle.
+template <int D, class Shape, class F>
+void with_stress_update(Model<D, Shape>& model, ParticleBatch<D>& b, F&& f) {
+  std::visit(
+      [&](const auto& material) {
+        using M = std::decay_t<decltype(material)>;
+        auto& states = std::get<StateArray<M>>(b.states);
+        auto for_state = [&]<StressState S>() {
+          typename M::State no_state{};
+          f([&](std::size_t p, const double(&L)[D][D]) {
+            update_particle_stress<D, Shape, S>(model, b, p, L, material, states.empty() ? no_state : states[p]);
+          });
+        };
+        if constexpr (D == 3) {
+          for_state.template operator()<StressState::three_d>();
+        } else if constexpr (D == 1) {
+          for_state.template operator()<StressState::uniaxial_stress>();
+        } else if (model.stress_state == StressState::plane_stress) {
+          for_state.template operator()<StressState::plane_stress>();
+        } else {
+          for_state.template operator()<StressState::plane_strain>();
+        }
+      },
+      model.materials[b.material]);
+}
+
+// One pass over the particles: g2p_motion, g2p_stress, or both (USL), from
+// one stencil per particle at its position at the start of the pass.
+template <int D, class Shape, bool Motion, bool Stress>
+void g2p(Model<D, Shape>& model) {
   using Layout = BlockLayout<D, Shape>;
   const auto& grid = model.grid;
   const double a = model.flip_fraction, dt = model.dt;
   // Largest particle speed of the step, for the time step and the guard:
   // per block, then combined (max is exact, so any order gives the same).
   std::atomic<double> max_speed_sq{0.0};
-  gather_by_block(model, [&](ParticleBatch<D>& b, std::uint32_t first, std::uint32_t last,
-                             std::uint32_t block) {
+  gather_by_block(model, [&](ParticleBatch<D>& b, std::uint32_t first, std::uint32_t last, std::uint32_t block) {
     const Index<D> bc = model.blocks.block_coords(block);
     double block_max_sq = 0.0;
     const Vec<D>* velocity = grid.velocity.data();
     const Vec<D>* velocity_change = grid.velocity_change.data();
-    for (std::uint32_t p = first; p < last; ++p) {
-      const Stencil<D, Shape, false> s(grid, b.x[p], b.half_width);
-      Vec<D> v_grid = Vec<D>::Zero(), dv = Vec<D>::Zero();
-      for (int k = 0; k < s.size; ++k) {
-        v_grid += s.N[k] * velocity[s.node[k]];
-        dv += s.N[k] * velocity_change[s.node[k]];
+    auto particles = [&](auto&& update_stress) {
+      for (std::uint32_t p = first; p < last; ++p) {
+        const Stencil<D, Shape, Stress> s(grid, b.x[p], b.half_width);
+        Vec<D> v_grid = Vec<D>::Zero(), dv = Vec<D>::Zero();
+        double L[D][D] = {};  // velocity gradient, in registers
+        for (int k = 0; k < s.size; ++k) {
+          const Vec<D>& v = velocity[s.node[k]];
+          if constexpr (Motion) {
+            v_grid += s.N[k] * v;
+            dv += s.N[k] * velocity_change[s.node[k]];
+          }
+          if constexpr (Stress) {
+            for (int i = 0; i < D; ++i)
+              for (int j = 0; j < D; ++j) L[i][j] += v[i] * s.dN[k][j];
+          }
+        }
+        if constexpr (Stress) update_stress(p, L);
+        if constexpr (Motion) {
+          const Vec<D> x_new = b.x[p] + dt * v_grid;
+          // A particle must stay where its stencil has nodes and may cross at
+          // most one cell per step; otherwise it is not moved and the step
+          // fails. (The range is checked on the grid coordinate before it
+          // becomes an int.)
+          bool inside = true, one_cell = true;
+          for (int d = 0; d < D; ++d) {
+            const double g_new = (x_new[d] - grid.origin[d]) * grid.inv_h[d];
+            inside = inside && g_new >= Shape::reach_below && g_new < grid.cells[d] - Shape::reach_above + 1;
+          }
+          const Index<D> c_new = inside ? grid.cell_of(x_new) : Index<D>{};
+          if (inside) {
+            const Index<D> c_old = grid.cell_of(b.x[p]);
+            for (int d = 0; d < D; ++d) one_cell = one_cell && std::abs(c_new[d] - c_old[d]) <= 1;
+          }
+          const Vec<D> v_new = a * (b.v[p] + dv) + (1.0 - a) * v_grid;
+          if (!inside || !one_cell || !v_new.allFinite()) {
+            model.flags.fail("a particle at " + position_text<D>(b.x[p]) + " would move to " +
+                             position_text<D>(x_new) +
+                             (!v_new.allFinite() ? ", its velocity not finite"
+                              : !inside          ? ", outside the grid"
+                                                 : ", more than one cell in one step"));
+            continue;
+          }
+          b.v[p] = v_new;
+          b.x[p] = x_new;
+          block_max_sq = std::max(block_max_sq, v_new.squaredNorm());
+          if (drift_from_block<D, Shape>(c_new, bc) >= Layout::drift_limit) {
+            model.flags.resort_needed.store(true, std::memory_order_relaxed);
+          }
+        }
       }
-      const Vec<D> x_new = b.x[p] + dt * v_grid;
-      // A particle must stay where its stencil has nodes and may cross at
-      // most one cell per step; otherwise it is not moved and the step fails.
-      // (The range is checked on the grid coordinate before it becomes an int.)
-      bool inside = true, one_cell = true;
-      for (int d = 0; d < D; ++d) {
-        const double g_new = (x_new[d] - grid.origin[d]) * grid.inv_h[d];
-        inside = inside && g_new >= Shape::reach_below && g_new < grid.cells[d] - Shape::reach_above + 1;
-      }
-      const Index<D> c_new = inside ? grid.cell_of(x_new) : Index<D>{};
-      if (inside) {
-        const Index<D> c_old = grid.cell_of(b.x[p]);
-        for (int d = 0; d < D; ++d) one_cell = one_cell && std::abs(c_new[d] - c_old[d]) <= 1;
-      }
-      const Vec<D> v_new = a * (b.v[p] + dv) + (1.0 - a) * v_grid;
-      if (!inside || !one_cell || !v_new.allFinite()) {
-        model.flags.fail("a particle at " + position_text<D>(b.x[p]) + " would move to " + position_text<D>(x_new) +
-                         (!v_new.allFinite() ? ", its velocity not finite"
-                          : !inside          ? ", outside the grid"
-                                             : ", more than one cell in one step"));
-        continue;
-      }
-      b.v[p] = v_new;
-      b.x[p] = x_new;
-      block_max_sq = std::max(block_max_sq, v_new.squaredNorm());
-      if (detail::drift_from_block<D, Shape>(c_new, bc) >= Layout::drift_limit) {
-        model.flags.resort_needed.store(true, std::memory_order_relaxed);
-      }
+    };
+    if constexpr (Stress) {
+      with_stress_update(model, b, particles);
+    } else {
+      particles([](std::size_t, const double(&)[D][D]) {});
     }
     double seen = max_speed_sq.load(std::memory_order_relaxed);
     while (block_max_sq > seen && !max_speed_sq.compare_exchange_weak(seen, block_max_sq)) {
     }
   });
-  model.max_speed_sq = max_speed_sq.load();
+  if constexpr (Motion) model.max_speed_sq = max_speed_sq.load();
 }
 
-template <int D, class Shape, StressState S, class MaterialModel>
-void update_stress(Model<D, Shape>& model, ParticleBatch<D>& b, const MaterialModel& material,
-                   StateArray<MaterialModel>& states) {
-  const auto& grid = model.grid;
-  const Vec<D>* velocity = grid.velocity.data();
-  const double dt = model.dt;
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, b.size(), 1024),
-                    [&](const tbb::blocked_range<std::size_t>& r) {
-    typename MaterialModel::State no_state{};
-    for (std::size_t p = r.begin(); p != r.end(); ++p) {
-      const Stencil<D, Shape> s(grid, b.x[p], b.half_width);
-      double L[D][D] = {};  // velocity gradient, in registers
-      for (int k = 0; k < s.size; ++k) {
-        const Vec<D>& v = velocity[s.node[k]];
-        for (int i = 0; i < D; ++i)
-          for (int j = 0; j < D; ++j) L[i][j] += v[i] * s.dN[k][j];
-      }
-      Voigt deps{};
-      for (int i = 0; i < D; ++i)
-        for (int j = i; j < D; ++j) deps[voigt_slot(i, j)] = 0.5 * (L[i][j] + L[j][i]) * dt;
-      MaterialInput input;
-      input.t = model.t + dt;
-      input.dt = dt;
-      input.length = b.particle_length;
-      for (int i = 0; i < D; ++i)
-        for (int j = 0; j < D; ++j) input.dL(i, j) = L[i][j] * dt;
-      auto& state = states.empty() ? no_state : states[p];
-      material.template update<S>(state, b.stress[p], deps, input);
-      if (!std::isfinite(b.stress[p][0] + b.stress[p][1] + b.stress[p][2] + b.stress[p][3] + b.stress[p][4] +
-                         b.stress[p][5])) {
-        model.flags.fail("a particle at " + position_text<D>(b.x[p]) + ": its stress is not finite");
-      }
-      for (int i = 0; i < 6; ++i) b.strain[p][i] += deps[i];
-      b.volume[p] *= 1.0 + deps[0] + deps[1] + deps[2];
-    }
-  });
+}  // namespace detail
+
+template <int D, class Shape>
+void g2p_motion(Model<D, Shape>& model) {
+  detail::g2p<D, Shape, true, false>(model);
 }
 
 template <int D, class Shape>
 void g2p_stress(Model<D, Shape>& model) {
-  for (auto& batch : model.batches) {
-    // One dispatch on the material per batch, none per particle.
-    std::visit(
-        [&](const auto& material) {
-          using M = std::decay_t<decltype(material)>;
-          auto& states = std::get<StateArray<M>>(batch.states);
-          if constexpr (D == 3) {
-            update_stress<D, Shape, StressState::three_d>(model, batch, material, states);
-          } else if constexpr (D == 1) {
-            update_stress<D, Shape, StressState::uniaxial_stress>(model, batch, material, states);
-          } else if (model.stress_state == StressState::plane_stress) {
-            update_stress<D, Shape, StressState::plane_stress>(model, batch, material, states);
-          } else {
-            update_stress<D, Shape, StressState::plane_strain>(model, batch, material, states);
-          }
-        },
-        model.materials[batch.material]);
-  }
+  detail::g2p<D, Shape, false, true>(model);
+}
+
+// USL: both stages in one pass, N and dN at the start-of-step positions.
+template <int D, class Shape>
+void g2p_motion_and_stress(Model<D, Shape>& model) {
+  detail::g2p<D, Shape, true, true>(model);
 }
 
 }  // namespace flowmpm
