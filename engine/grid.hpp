@@ -47,14 +47,14 @@ struct Grid {
 
   std::size_t node_count() const { return mass.size(); }
 
-  std::size_t node_index(const Index<D>& i) const {
+  [[gnu::always_inline]] std::size_t node_index(const Index<D>& i) const {
     std::size_t index = static_cast<std::size_t>(i[D - 1]);
     for (int d = D - 2; d >= 0; --d) index = index * nodes[d] + i[d];
     return index;
   }
 
   // The cell that holds x (indices may lie outside the grid).
-  Index<D> cell_of(const Vec<D>& x) const {
+  [[gnu::always_inline]] Index<D> cell_of(const Vec<D>& x) const {
     Index<D> c;
     for (int d = 0; d < D; ++d) c[d] = floor_to_int((x[d] - origin[d]) * inv_h[d]);
     return c;

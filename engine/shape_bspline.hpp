@@ -16,7 +16,7 @@ struct QuadraticBSpline {
   static constexpr int reach_below = 1;  // nodes c - 1 ... c + 2, three of them
   static constexpr int reach_above = 2;
 
-  static void stencil(double g, double inv_h, double, int& base, double (&w)[support],
+  [[gnu::always_inline]] static void stencil(double g, double inv_h, double, int& base, double (&w)[support],
                       double (&dw)[support]) {
     base = floor_to_int(g - 0.5);
     const double t = g - base;  // in [0.5, 1.5): distance to the first node
@@ -36,7 +36,7 @@ struct CubicBSpline {
   static constexpr int reach_below = 1;  // nodes c - 1 ... c + 2
   static constexpr int reach_above = 2;
 
-  static void stencil(double g, double inv_h, double, int& base, double (&w)[support],
+  [[gnu::always_inline]] static void stencil(double g, double inv_h, double, int& base, double (&w)[support],
                       double (&dw)[support]) {
     const int c = floor_to_int(g);
     base = c - 1;

@@ -22,7 +22,7 @@ struct GimpShape {
   static constexpr int reach_below = 1;
   static constexpr int reach_above = 2;
 
-  static void stencil(double g, double inv_h, double lp, int& base, double (&w)[support],
+  [[gnu::always_inline]] static void stencil(double g, double inv_h, double lp, int& base, double (&w)[support],
                       double (&dw)[support]) {
     base = floor_to_int(g) - 1;
     for (int k = 0; k < support; ++k) {

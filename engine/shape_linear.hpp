@@ -20,7 +20,7 @@ struct LinearShape {
   // 1D stencil for a particle at grid coordinate g = (x - origin) / h with
   // half-width l_p / h (unused here): first node `base`, weights w and
   // derivatives dw = dN/dx.
-  static void stencil(double g, double inv_h, double, int& base, double (&w)[support],
+  [[gnu::always_inline]] static void stencil(double g, double inv_h, double, int& base, double (&w)[support],
                       double (&dw)[support]) {
     base = floor_to_int(g);
     const double s = g - base;

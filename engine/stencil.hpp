@@ -3,6 +3,10 @@
 // per particle and stage. Node a of the stencil is (k_x, k_y, k_z) with
 // a = k_x + S (k_y + S k_z), S = Shape::support; every loop has a
 // compile-time trip count so that the compiler unrolls it completely.
+// The per-particle functions of the hot loops (this constructor, the 1D
+// shape stencils, Grid::cell_of and node_index, the stress update) are
+// always inlined: GCC -O3 left them out of line in the large stage
+// instantiations, which kept N and dN in memory (measured with perf).
 #pragma once
 #include <array>
 
@@ -21,7 +25,7 @@ struct Stencil {
   std::array<Vec<D>, WithGradient ? size : 0> dN;
 
   // `half_width`: the particle's half-width per axis in cells (uGIMP).
-  Stencil(const Grid<D>& grid, const Vec<D>& x, const Vec<D>& half_width) {
+  [[gnu::always_inline]] Stencil(const Grid<D>& grid, const Vec<D>& x, const Vec<D>& half_width) {
     double w[D][S], dw[D][S];
     Index<D> base;
     for (int d = 0; d < D; ++d) {

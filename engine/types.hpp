@@ -31,7 +31,7 @@ constexpr int voigt_slot(int i, int j) {
 
 // floor(g) as an int, without a libm call (std::floor is one on x86-64
 // without SSE4.1); |g| must be well inside the int range.
-inline int floor_to_int(double g) {
+[[gnu::always_inline]] inline int floor_to_int(double g) {
   const int i = static_cast<int>(g);
   return i - (g < static_cast<double>(i));
 }

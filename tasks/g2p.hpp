@@ -34,7 +34,7 @@ int drift_from_block(const Index<D>& c, const Index<D>& block) {
 
 // The material update of particle p for its velocity gradient L (g2p_stress).
 template <int D, class Shape, StressState S, class MaterialModel>
-void update_particle_stress(Model<D, Shape>& model, ParticleBatch<D>& b, std::size_t p, const double (&L)[D][D],
+[[gnu::always_inline]] inline void update_particle_stress(Model<D, Shape>& model, ParticleBatch<D>& b, std::size_t p, const double (&L)[D][D],
                             const MaterialModel& material, typename MaterialModel::State& state) {
   const double dt = model.dt;
   Voigt deps{};
