@@ -4,6 +4,7 @@
 // are coloured by the parity of their block index (2^D colours) so that
 // blocks of one colour share no node (see engine/blocks.hpp).
 #pragma once
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -19,10 +20,15 @@ struct Grid {
   Index<D> cells{};               // cell count per axis
   Index<D> nodes{};               // cells + 1
 
+  // A nodal vector field, one array per component (component d of node n
+  // is field[d][n]): the nodes of a stencil line along x are neighbours in
+  // memory, so the compiler can load and add two of them at once.
+  using VectorField = std::array<std::vector<double>, D>;
+
   // Nodal fields: mass m, momentum p, force f, velocity v (after the last
   // grid stage that set it) and dv, the velocity change of grid_integrate.
   std::vector<double> mass;
-  std::vector<Vec<D>> momentum, force, velocity, velocity_change;
+  VectorField momentum, force, velocity, velocity_change;
 
   // Only nodes inside [active_lo, active_hi] (inclusive) can carry mass;
   // grid stages clear and visit that box alone.
@@ -39,10 +45,8 @@ struct Grid {
       active_hi[d] = cells[d];
     }
     mass.assign(n, 0.0);
-    momentum.assign(n, Vec<D>::Zero());
-    force.assign(n, Vec<D>::Zero());
-    velocity.assign(n, Vec<D>::Zero());
-    velocity_change.assign(n, Vec<D>::Zero());
+    for (VectorField* field : {&momentum, &force, &velocity, &velocity_change})
+      for (auto& component : *field) component.assign(n, 0.0);
   }
 
   std::size_t node_count() const { return mass.size(); }

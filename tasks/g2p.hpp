@@ -96,23 +96,38 @@ void g2p(Model<D, Shape>& model) {
   gather_by_block(model, [&](ParticleBatch<D>& b, std::uint32_t first, std::uint32_t last, std::uint32_t block) {
     const Index<D> bc = model.blocks.block_coords(block);
     double block_max_sq = 0.0;
-    const Vec<D>* velocity = grid.velocity.data();
-    const Vec<D>* velocity_change = grid.velocity_change.data();
+    const double* velocity[D];
+    const double* velocity_change[D];
+    for (int d = 0; d < D; ++d) {
+      velocity[d] = grid.velocity[d].data();
+      velocity_change[d] = grid.velocity_change[d].data();
+    }
     auto particles = [&](auto&& update_stress) {
       for (std::uint32_t p = first; p < last; ++p) {
         const Stencil<D, Shape, Stress> s(grid, b.x[p], b.half_width);
-        Vec<D> v_grid = Vec<D>::Zero(), dv = Vec<D>::Zero();
-        double L[D][D] = {};  // velocity gradient, in registers
-        for (int k = 0; k < s.size; ++k) {
-          const Vec<D>& v = velocity[s.node[k]];
-          if constexpr (Motion) {
-            v_grid += s.N[k] * v;
-            dv += s.N[k] * velocity_change[s.node[k]];
+        // Sums over the stencil, two nodes per lane pair, then the lanes added.
+        NodePair v_sum[D] = {}, dv_sum[D] = {}, L_sum[D][D] = {};
+        s.for_each_node_pair([&]<int Count>(int a, std::size_t n) {
+          const NodePair N = load_nodes<Count>(&s.N[a]);
+          NodePair dN[D];
+          if constexpr (Stress)
+            for (int j = 0; j < D; ++j) dN[j] = load_nodes<Count>(&s.dN[j][a]);
+          for (int i = 0; i < D; ++i) {
+            const NodePair v = load_nodes<Count>(velocity[i] + n);
+            if constexpr (Motion) {
+              v_sum[i] += N * v;
+              dv_sum[i] += N * load_nodes<Count>(velocity_change[i] + n);
+            }
+            if constexpr (Stress)
+              for (int j = 0; j < D; ++j) L_sum[i][j] += v * dN[j];
           }
-          if constexpr (Stress) {
-            for (int i = 0; i < D; ++i)
-              for (int j = 0; j < D; ++j) L[i][j] += v[i] * s.dN[k][j];
-          }
+        });
+        Vec<D> v_grid, dv;
+        double L[D][D];  // velocity gradient
+        for (int i = 0; i < D; ++i) {
+          v_grid[i] = sum(v_sum[i]);
+          dv[i] = sum(dv_sum[i]);
+          for (int j = 0; j < D; ++j) L[i][j] = sum(L_sum[i][j]);
         }
         if constexpr (Stress) update_stress(p, L);
         if constexpr (Motion) {

@@ -14,8 +14,8 @@ void apply_velocity_constraints(Model<D, Shape>& model, double time) {
   for (const NodeConstraint& c : model.constraints) {
     const double value = c.velocity(time);
     for (std::size_t n : c.nodes) {
-      grid.velocity[n][c.axis] = value;
-      grid.momentum[n][c.axis] = grid.mass[n] * value;
+      grid.velocity[c.axis][n] = value;
+      grid.momentum[c.axis][n] = grid.mass[n] * value;
     }
   }
   // Ghost nodes take their mirror's velocity, reflected about the plane's.
@@ -23,9 +23,10 @@ void apply_velocity_constraints(Model<D, Shape>& model, double time) {
     for (int d = 0; d < D; ++d) {
       const bool constrained = plane.velocity[d].has_value();
       const double V = constrained ? (*plane.velocity[d])(time) : 0.0;
+      auto& v = grid.velocity[d];
       for (auto [ghost, mirror] : plane.pairs) {
-        grid.velocity[ghost][d] = constrained ? 2.0 * V - grid.velocity[mirror][d] : grid.velocity[mirror][d];
-        grid.momentum[ghost][d] = grid.mass[ghost] * grid.velocity[ghost][d];
+        v[ghost] = constrained ? 2.0 * V - v[mirror] : v[mirror];
+        grid.momentum[d][ghost] = grid.mass[ghost] * v[ghost];
       }
     }
   }
@@ -34,12 +35,12 @@ void apply_velocity_constraints(Model<D, Shape>& model, double time) {
 // Hands what the ghost nodes received to their mirror nodes (MirrorPlane):
 // `field` is momentum or force, `mass` too for the former.
 template <int D, class Shape>
-void fold_mirror_planes(Model<D, Shape>& model, std::vector<Vec<D>>& field, bool with_mass) {
+void fold_mirror_planes(Model<D, Shape>& model, typename Grid<D>::VectorField& field, bool with_mass) {
   auto& grid = model.grid;
   for (const MirrorPlane& plane : model.mirror_planes) {
     for (auto [ghost, mirror] : plane.pairs) {
       if (with_mass) grid.mass[mirror] += grid.mass[ghost];
-      for (int d = 0; d < D; ++d) field[mirror][d] += (plane.velocity[d] ? -1.0 : 1.0) * field[ghost][d];
+      for (int d = 0; d < D; ++d) field[d][mirror] += (plane.velocity[d] ? -1.0 : 1.0) * field[d][ghost];
     }
   }
 }
@@ -50,7 +51,8 @@ void grid_velocity(Model<D, Shape>& model) {
   const double threshold = model.mass_threshold;
   fold_mirror_planes(model, grid.momentum, true);
   for_each_active_node(grid, [&](std::size_t n, const Index<D>&) {
-    grid.velocity[n] = grid.mass[n] > threshold ? Vec<D>(grid.momentum[n] / grid.mass[n]) : Vec<D>::Zero();
+    const bool massive = grid.mass[n] > threshold;
+    for (int d = 0; d < D; ++d) grid.velocity[d][n] = massive ? grid.momentum[d][n] / grid.mass[n] : 0.0;
   });
   apply_velocity_constraints(model, model.t);
 }
@@ -61,17 +63,20 @@ void grid_integrate(Model<D, Shape>& model) {
   const double threshold = model.mass_threshold, dt = model.dt;
   fold_mirror_planes(model, grid.force, false);
   for_each_active_node(grid, [&](std::size_t n, const Index<D>&) {
-    grid.velocity_change[n] = grid.velocity[n];  // v_I before the update
-    if (grid.mass[n] > threshold) {
-      grid.momentum[n] += grid.force[n] * dt;
-      grid.velocity[n] = grid.momentum[n] / grid.mass[n];
-    } else {
-      grid.velocity[n].setZero();
+    const bool massive = grid.mass[n] > threshold;
+    for (int d = 0; d < D; ++d) {
+      grid.velocity_change[d][n] = grid.velocity[d][n];  // v_I before the update
+      if (massive) {
+        grid.momentum[d][n] += grid.force[d][n] * dt;
+        grid.velocity[d][n] = grid.momentum[d][n] / grid.mass[n];
+      } else {
+        grid.velocity[d][n] = 0.0;
+      }
     }
   });
   apply_velocity_constraints(model, model.t + dt);
   for_each_active_node(grid, [&](std::size_t n, const Index<D>&) {
-    grid.velocity_change[n] = grid.velocity[n] - grid.velocity_change[n];
+    for (int d = 0; d < D; ++d) grid.velocity_change[d][n] = grid.velocity[d][n] - grid.velocity_change[d][n];
   });
 }
 

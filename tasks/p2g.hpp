@@ -19,17 +19,21 @@ template <int D, class Shape, bool Momentum, bool Force>
 void p2g(Model<D, Shape>& model) {
   auto& grid = model.grid;
   for_each_active_node(grid, [&](std::size_t n, const Index<D>&) {
-    if constexpr (Momentum) {
-      grid.mass[n] = 0.0;
-      grid.momentum[n].setZero();
+    if constexpr (Momentum) grid.mass[n] = 0.0;
+    for (int d = 0; d < D; ++d) {
+      if constexpr (Momentum) grid.momentum[d][n] = 0.0;
+      if constexpr (Force) grid.force[d][n] = 0.0;
     }
-    if constexpr (Force) grid.force[n].setZero();
   });
   const Vec<D> g = model.gravity;
   scatter_by_colour(model, [&](ParticleBatch<D>& b, std::uint32_t first, std::uint32_t last, std::uint32_t) {
     double* mass = grid.mass.data();
-    Vec<D>* momentum = grid.momentum.data();
-    Vec<D>* force = grid.force.data();
+    double* momentum[D];
+    double* force[D];
+    for (int d = 0; d < D; ++d) {
+      momentum[d] = grid.momentum[d].data();
+      force[d] = grid.force[d].data();
+    }
     for (std::uint32_t p = first; p < last; ++p) {
       const Stencil<D, Shape, Force> s(grid, b.x[p], b.half_width);
       const double m = b.mass[p];
@@ -40,18 +44,23 @@ void p2g(Model<D, Shape>& model) {
         for (int i = 0; i < D; ++i)
           for (int j = 0; j < D; ++j) Vsigma[i][j] = b.volume[p] * sigma[voigt_slot(i, j)];
       }
-      for (int a = 0; a < s.size; ++a) {
+      s.for_each_node_pair([&]<int Count>(int a, std::size_t n) {
+        const NodePair N = load_nodes<Count>(&s.N[a]);
         if constexpr (Momentum) {
-          mass[s.node[a]] += s.N[a] * m;
-          momentum[s.node[a]] += s.N[a] * mv;
+          store_nodes<Count>(mass + n, load_nodes<Count>(mass + n) + N * m);
+          for (int i = 0; i < D; ++i)
+            store_nodes<Count>(momentum[i] + n, load_nodes<Count>(momentum[i] + n) + N * mv[i]);
         }
         if constexpr (Force) {
-          Vec<D> f = s.N[a] * mg;
-          for (int i = 0; i < D; ++i)
-            for (int j = 0; j < D; ++j) f[i] -= Vsigma[i][j] * s.dN[a][j];
-          force[s.node[a]] += f;
+          NodePair dN[D];
+          for (int j = 0; j < D; ++j) dN[j] = load_nodes<Count>(&s.dN[j][a]);
+          for (int i = 0; i < D; ++i) {
+            NodePair f = N * mg[i];
+            for (int j = 0; j < D; ++j) f -= Vsigma[i][j] * dN[j];
+            store_nodes<Count>(force[i] + n, load_nodes<Count>(force[i] + n) + f);
+          }
         }
-      }
+      });
     }
   });
 }

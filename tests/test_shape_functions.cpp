@@ -45,9 +45,9 @@ void check_invariants(double half_width = 0.25) {
       const Vec<D> xI = grid.node_position(grid.node_ijk(s.node[a]));
       CHECK(s.N[a] >= -1e-15);
       sum_N += s.N[a];
-      sum_dN += s.dN[a];
+      sum_dN += s.gradient(a);
       sum_Nx += s.N[a] * xI;
-      sum_xdN += xI * s.dN[a].transpose();
+      sum_xdN += xI * s.gradient(a).transpose();
     }
     CHECK(sum_N == doctest::Approx(1.0).epsilon(1e-12));
     for (int d = 0; d < D; ++d) {
@@ -92,8 +92,8 @@ std::pair<double, double> jump_across_face(double lp) {
   const double eps = 1e-9;
   std::map<std::size_t, std::pair<double, double>> below, above;
   const Stencil<1, Shape> a(grid, Vec<1>(3.0 - eps), Vec<1>(lp)), b(grid, Vec<1>(3.0 + eps), Vec<1>(lp));
-  for (int k = 0; k < a.size; ++k) below[a.node[k]] = {a.N[k], a.dN[k][0]};
-  for (int k = 0; k < b.size; ++k) above[b.node[k]] = {b.N[k], b.dN[k][0]};
+  for (int k = 0; k < a.size; ++k) below[a.node[k]] = {a.N[k], a.dN[0][k]};
+  for (int k = 0; k < b.size; ++k) above[b.node[k]] = {b.N[k], b.dN[0][k]};
   double dN = 0.0, dG = 0.0;
   for (std::size_t n = 0; n < grid.node_count(); ++n) {
     const auto x = below.count(n) ? below[n] : std::pair{0.0, 0.0};
@@ -129,6 +129,6 @@ TEST_CASE("linear shape function values by hand") {
   CHECK(s.node[3] == 4);
   CHECK(s.N[0] == doctest::Approx(0.375));
   CHECK(s.N[1] == doctest::Approx(0.125));
-  CHECK(s.dN[0][0] == doctest::Approx(-0.5));
-  CHECK(s.dN[0][1] == doctest::Approx(-0.75));
+  CHECK(s.gradient(0)[0] == doctest::Approx(-0.5));
+  CHECK(s.gradient(0)[1] == doctest::Approx(-0.75));
 }
