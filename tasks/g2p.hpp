@@ -20,18 +20,6 @@ namespace flowmpm {
 
 namespace detail {
 
-// Cells a particle in cell c lies outside block `block` (0 inside).
-template <int D, class Shape>
-int drift_from_block(const Index<D>& c, const Index<D>& block) {
-  constexpr int B = BlockLayout<D, Shape>::block_cells;
-  int drift = 0;
-  for (int d = 0; d < D; ++d) {
-    drift = std::max(drift, block[d] * B - c[d]);
-    drift = std::max(drift, c[d] - (block[d] * B + B - 1));
-  }
-  return drift;
-}
-
 // The material update of particle p for its velocity gradient L (g2p_stress).
 template <int D, class Shape, StressState S, class MaterialModel>
 [[gnu::always_inline]] inline void update_particle_stress(Model<D, Shape>& model, ParticleBatch<D>& b, std::size_t p, const double (&L)[D][D],
@@ -94,7 +82,14 @@ void g2p(Model<D, Shape>& model) {
   // per block, then combined (max is exact, so any order gives the same).
   std::atomic<double> max_speed_sq{0.0};
   gather_by_block(model, [&](ParticleBatch<D>& b, std::uint32_t first, std::uint32_t last, std::uint32_t block) {
+    // The cells the block's particles may reach before a re-sort is due:
+    // fewer than drift_limit cells outside the block, per axis.
     const Index<D> bc = model.blocks.block_coords(block);
+    Index<D> stay_lo, stay_hi;
+    for (int d = 0; d < D; ++d) {
+      stay_lo[d] = bc[d] * Layout::block_cells - Layout::drift_limit + 1;
+      stay_hi[d] = bc[d] * Layout::block_cells + Layout::block_cells - 2 + Layout::drift_limit;
+    }
     double block_max_sq = 0.0;
     const double* velocity[D];
     const double* velocity_change[D];
@@ -136,15 +131,19 @@ void g2p(Model<D, Shape>& model) {
           // most one cell per step; otherwise it is not moved and the step
           // fails. (The range is checked on the grid coordinate before it
           // becomes an int.)
-          bool inside = true, one_cell = true;
+          bool inside = true, one_cell = true, stays = true;
+          Index<D> c_new{};
           for (int d = 0; d < D; ++d) {
             const double g_new = (x_new[d] - grid.origin[d]) * grid.inv_h[d];
             inside = inside && g_new >= Shape::reach_below && g_new < grid.cells[d] - Shape::reach_above + 1;
+            c_new[d] = inside ? floor_to_int(g_new) : 0;
           }
-          const Index<D> c_new = inside ? grid.cell_of(x_new) : Index<D>{};
           if (inside) {
             const Index<D> c_old = grid.cell_of(b.x[p]);
-            for (int d = 0; d < D; ++d) one_cell = one_cell && std::abs(c_new[d] - c_old[d]) <= 1;
+            for (int d = 0; d < D; ++d) {
+              one_cell = one_cell && std::abs(c_new[d] - c_old[d]) <= 1;
+              stays = stays && c_new[d] >= stay_lo[d] && c_new[d] <= stay_hi[d];
+            }
           }
           const Vec<D> v_new = a * (b.v[p] + dv) + (1.0 - a) * v_grid;
           if (!inside || !one_cell || !v_new.allFinite()) {
@@ -158,9 +157,7 @@ void g2p(Model<D, Shape>& model) {
           b.v[p] = v_new;
           b.x[p] = x_new;
           block_max_sq = std::max(block_max_sq, v_new.squaredNorm());
-          if (drift_from_block<D, Shape>(c_new, bc) >= Layout::drift_limit) {
-            model.flags.resort_needed.store(true, std::memory_order_relaxed);
-          }
+          if (!stays) model.flags.resort_needed.store(true, std::memory_order_relaxed);
         }
       }
     };
