@@ -1,14 +1,17 @@
 // The nodes a particle touches, with N (and optionally dN) at the particle:
 // the tensor product of the shape function's 1D stencils, evaluated once
 // per particle and stage. Node a of the stencil is (k_x, k_y, k_z) with
-// a = k_x + S (k_y + S k_z), S = Shape::support, so that the S nodes of a
-// line along x (one k_y, k_z) are neighbours in the stencil's arrays as in
-// the grid's; every loop has a compile-time trip count so that the compiler
-// unrolls it completely.
+// a = k_x + S (k_y + S k_z), S = Shape::support: the S nodes of a line
+// along x (one k_y, k_z) are neighbours in the grid. The stencil keeps the
+// factors, not the S^D products: along x, the 1D weights w_x and
+// derivatives dw_x; per line, w_yz = w_y w_z, dy_yz = dw_y w_z and
+// dz_yz = w_y dw_z. Then N = w_x w_yz, dN/dx = dw_x w_yz, dN/dy = w_x dy_yz
+// and dN/dz = w_x dz_yz, formed two nodes at a time where they are used.
+// Every loop has a compile-time trip count, so the compiler unrolls it.
 // The per-particle functions of the hot loops (this constructor, the 1D
 // shape stencils, Grid::cell_of and node_index, the stress update) are
 // always inlined: GCC -O3 left them out of line in the large stage
-// instantiations, which kept N and dN in memory (measured with perf).
+// instantiations (measured with perf).
 #pragma once
 #include <array>
 
@@ -23,30 +26,9 @@ struct Stencil {
   static constexpr int size = D == 1 ? S : D == 2 ? S * S : S * S * S;
   static constexpr int lines = size / S;  // lines of S nodes along x
 
-  std::size_t first;                   // node index of k = (0, 0, 0)
-  std::array<std::size_t, size> node;  // node index of each stencil node
-  std::array<double, size> N;
-  // dN[j][a] = dN_a / dx_j: one array per component, like N.
-  std::array<std::array<double, size>, WithGradient ? D : 0> dN;
-
-  // Visits the nodes line by line along x, two at a time:
-  // f.template operator()<2>(a, n) for stencil nodes a, a + 1 (grid nodes
-  // n, n + 1), and f.template operator()<1>(a, n) for the last node of a
-  // line of odd length.
-  template <class F>
-  [[gnu::always_inline]] void for_each_node_pair(F&& f) const {
-    for (int line = 0; line < lines; ++line) {
-      const int a = S * line;
-      for (int k = 0; k + 1 < S; k += 2) f.template operator()<2>(a + k, node[a + k]);
-      if constexpr (S % 2 == 1) f.template operator()<1>(a + S - 1, node[a + S - 1]);
-    }
-  }
-
-  Vec<D> gradient(int a) const {
-    Vec<D> g;
-    for (int j = 0; j < D; ++j) g[j] = dN[j][a];
-    return g;
-  }
+  std::array<double, S> w_x, dw_x;
+  std::array<std::size_t, lines> line_node;  // node index of k_x = 0
+  std::array<double, lines> w_yz, dy_yz, dz_yz;
 
   // `half_width`: the particle's half-width per axis in cells (uGIMP).
   [[gnu::always_inline]] Stencil(const Grid<D>& grid, const Vec<D>& x, const Vec<D>& half_width) {
@@ -56,34 +38,67 @@ struct Stencil {
       const double g = (x[d] - grid.origin[d]) * grid.inv_h[d];
       Shape::stencil(g, grid.inv_h[d], half_width[d], base[d], w[d], dw[d]);
     }
-    first = grid.node_index(base);
+    for (int k = 0; k < S; ++k) {
+      w_x[k] = w[0][k];
+      dw_x[k] = dw[0][k];
+    }
+    const std::size_t first = grid.node_index(base);
     const std::size_t sy = D > 1 ? static_cast<std::size_t>(grid.nodes[0]) : 0;
     const std::size_t sz = D > 2 ? sy * static_cast<std::size_t>(grid.nodes[1]) : 0;
     constexpr int Y = D > 1 ? S : 1, Z = D > 2 ? S : 1;
-    // Products over the y and z axes, formed once per (k_y, k_z) pair.
-    double w_yz[Z][Y], dy_yz[Z][Y], dz_yz[Z][Y];
     for (int kz = 0; kz < Z; ++kz) {
       for (int ky = 0; ky < Y; ++ky) {
+        const int line = ky + Y * kz;
         const double wy = D > 1 ? w[D > 1 ? 1 : 0][ky] : 1.0, wz = D > 2 ? w[D > 2 ? 2 : 0][kz] : 1.0;
-        w_yz[kz][ky] = wy * wz;
-        dy_yz[kz][ky] = D > 1 ? dw[D > 1 ? 1 : 0][ky] * wz : 0.0;
-        dz_yz[kz][ky] = D > 2 ? wy * dw[D > 2 ? 2 : 0][kz] : 0.0;
+        line_node[line] = first + ky * sy + kz * sz;
+        w_yz[line] = wy * wz;
+        dy_yz[line] = D > 1 ? dw[D > 1 ? 1 : 0][ky] * wz : 0.0;
+        dz_yz[line] = D > 2 ? wy * dw[D > 2 ? 2 : 0][kz] : 0.0;
       }
     }
-    for (int kz = 0; kz < Z; ++kz) {
-      for (int ky = 0; ky < Y; ++ky) {
-        for (int kx = 0; kx < S; ++kx) {
-          const int a = kx + S * (ky + S * kz);
-          node[a] = first + kx + ky * sy + kz * sz;
-          N[a] = w[0][kx] * w_yz[kz][ky];
-          if constexpr (WithGradient) {
-            dN[0][a] = dw[0][kx] * w_yz[kz][ky];
-            if constexpr (D > 1) dN[1][a] = w[0][kx] * dy_yz[kz][ky];
-            if constexpr (D > 2) dN[2][a] = w[0][kx] * dz_yz[kz][ky];
-          }
-        }
-      }
+  }
+
+  // N and dN of nodes k, k + 1 of `line` (Count = 2), or of node k and 0
+  // (Count = 1).
+  template <int Count>
+  struct PairWeights {
+    NodePair N;
+    NodePair dN[D];
+  };
+  template <int Count>
+  [[gnu::always_inline]] PairWeights<Count> pair_weights(int line, int k) const {
+    PairWeights<Count> p;
+    const NodePair wx = load_nodes<Count>(&w_x[k]);
+    p.N = wx * w_yz[line];
+    if constexpr (WithGradient) {
+      p.dN[0] = load_nodes<Count>(&dw_x[k]) * w_yz[line];
+      if constexpr (D > 1) p.dN[1] = wx * dy_yz[line];
+      if constexpr (D > 2) p.dN[2] = wx * dz_yz[line];
     }
+    return p;
+  }
+
+  // Visits the nodes line by line along x, two at a time:
+  // f.template operator()<2>(line, k, n) for nodes k, k + 1 of the line
+  // (grid nodes n, n + 1), and f.template operator()<1>(line, k, n) for the
+  // last node of a line of odd length.
+  template <class F>
+  [[gnu::always_inline]] void for_each_node_pair(F&& f) const {
+    for (int line = 0; line < lines; ++line) {
+      for (int k = 0; k + 1 < S; k += 2) f.template operator()<2>(line, k, line_node[line] + k);
+      if constexpr (S % 2 == 1) f.template operator()<1>(line, S - 1, line_node[line] + S - 1);
+    }
+  }
+
+  // One node at a time, for checks and set-up: node a's index, N and dN.
+  std::size_t node(int a) const { return line_node[a / S] + a % S; }
+  double N(int a) const { return w_x[a % S] * w_yz[a / S]; }
+  Vec<D> gradient(int a) const {
+    Vec<D> g;
+    g[0] = dw_x[a % S] * w_yz[a / S];
+    if constexpr (D > 1) g[1] = w_x[a % S] * dy_yz[a / S];
+    if constexpr (D > 2) g[2] = w_x[a % S] * dz_yz[a / S];
+    return g;
   }
 };
 

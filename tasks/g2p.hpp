@@ -102,11 +102,9 @@ void g2p(Model<D, Shape>& model) {
         const Stencil<D, Shape, Stress> s(grid, b.x[p], b.half_width);
         // Sums over the stencil, two nodes per lane pair, then the lanes added.
         NodePair v_sum[D] = {}, dv_sum[D] = {}, L_sum[D][D] = {};
-        s.for_each_node_pair([&]<int Count>(int a, std::size_t n) {
-          const NodePair N = load_nodes<Count>(&s.N[a]);
-          NodePair dN[D];
-          if constexpr (Stress)
-            for (int j = 0; j < D; ++j) dN[j] = load_nodes<Count>(&s.dN[j][a]);
+        s.for_each_node_pair([&]<int Count>(int line, int k, std::size_t n) {
+          const auto w = s.template pair_weights<Count>(line, k);
+          const NodePair N = w.N;
           for (int i = 0; i < D; ++i) {
             const NodePair v = load_nodes<Count>(velocity[i] + n);
             if constexpr (Motion) {
@@ -114,7 +112,7 @@ void g2p(Model<D, Shape>& model) {
               dv_sum[i] += N * load_nodes<Count>(velocity_change[i] + n);
             }
             if constexpr (Stress)
-              for (int j = 0; j < D; ++j) L_sum[i][j] += v * dN[j];
+              for (int j = 0; j < D; ++j) L_sum[i][j] += v * w.dN[j];
           }
         });
         Vec<D> v_grid, dv;

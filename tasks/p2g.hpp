@@ -44,19 +44,18 @@ void p2g(Model<D, Shape>& model) {
         for (int i = 0; i < D; ++i)
           for (int j = 0; j < D; ++j) Vsigma[i][j] = b.volume[p] * sigma[voigt_slot(i, j)];
       }
-      s.for_each_node_pair([&]<int Count>(int a, std::size_t n) {
-        const NodePair N = load_nodes<Count>(&s.N[a]);
+      s.for_each_node_pair([&]<int Count>(int line, int k, std::size_t n) {
+        const auto w = s.template pair_weights<Count>(line, k);
+        const NodePair N = w.N;
         if constexpr (Momentum) {
           store_nodes<Count>(mass + n, load_nodes<Count>(mass + n) + N * m);
           for (int i = 0; i < D; ++i)
             store_nodes<Count>(momentum[i] + n, load_nodes<Count>(momentum[i] + n) + N * mv[i]);
         }
         if constexpr (Force) {
-          NodePair dN[D];
-          for (int j = 0; j < D; ++j) dN[j] = load_nodes<Count>(&s.dN[j][a]);
           for (int i = 0; i < D; ++i) {
             NodePair f = N * mg[i];
-            for (int j = 0; j < D; ++j) f -= Vsigma[i][j] * dN[j];
+            for (int j = 0; j < D; ++j) f -= Vsigma[i][j] * w.dN[j];
             store_nodes<Count>(force[i] + n, load_nodes<Count>(force[i] + n) + f);
           }
         }

@@ -42,11 +42,11 @@ void check_invariants(double half_width = 0.25) {
     Vec<D> sum_dN = Vec<D>::Zero(), sum_Nx = Vec<D>::Zero();
     Eigen::Matrix<double, D, D> sum_xdN = Eigen::Matrix<double, D, D>::Zero();
     for (int a = 0; a < s.size; ++a) {
-      const Vec<D> xI = grid.node_position(grid.node_ijk(s.node[a]));
-      CHECK(s.N[a] >= -1e-15);
-      sum_N += s.N[a];
+      const Vec<D> xI = grid.node_position(grid.node_ijk(s.node(a)));
+      CHECK(s.N(a) >= -1e-15);
+      sum_N += s.N(a);
       sum_dN += s.gradient(a);
-      sum_Nx += s.N[a] * xI;
+      sum_Nx += s.N(a) * xI;
       sum_xdN += xI * s.gradient(a).transpose();
     }
     CHECK(sum_N == doctest::Approx(1.0).epsilon(1e-12));
@@ -92,8 +92,8 @@ std::pair<double, double> jump_across_face(double lp) {
   const double eps = 1e-9;
   std::map<std::size_t, std::pair<double, double>> below, above;
   const Stencil<1, Shape> a(grid, Vec<1>(3.0 - eps), Vec<1>(lp)), b(grid, Vec<1>(3.0 + eps), Vec<1>(lp));
-  for (int k = 0; k < a.size; ++k) below[a.node[k]] = {a.N[k], a.dN[0][k]};
-  for (int k = 0; k < b.size; ++k) above[b.node[k]] = {b.N[k], b.dN[0][k]};
+  for (int k = 0; k < a.size; ++k) below[a.node(k)] = {a.N(k), a.gradient(k)[0]};
+  for (int k = 0; k < b.size; ++k) above[b.node(k)] = {b.N(k), b.gradient(k)[0]};
   double dN = 0.0, dG = 0.0;
   for (std::size_t n = 0; n < grid.node_count(); ++n) {
     const auto x = below.count(n) ? below[n] : std::pair{0.0, 0.0};
@@ -123,12 +123,47 @@ TEST_CASE("linear shape function values by hand") {
   // Particle at (0.25, 0.5) in a unit cell: weights (0.75, 0.25) x (0.5, 0.5).
   const Grid<2> grid(Vec<2>::Zero(), Vec<2>::Ones(), {2, 2});
   const Stencil<2, LinearShape> s(grid, Vec<2>(0.25, 0.5), Vec<2>::Zero());
-  CHECK(s.node[0] == 0);
-  CHECK(s.node[1] == 1);
-  CHECK(s.node[2] == 3);
-  CHECK(s.node[3] == 4);
-  CHECK(s.N[0] == doctest::Approx(0.375));
-  CHECK(s.N[1] == doctest::Approx(0.125));
+  CHECK(s.node(0) == 0);
+  CHECK(s.node(1) == 1);
+  CHECK(s.node(2) == 3);
+  CHECK(s.node(3) == 4);
+  CHECK(s.N(0) == doctest::Approx(0.375));
+  CHECK(s.N(1) == doctest::Approx(0.125));
   CHECK(s.gradient(0)[0] == doctest::Approx(-0.5));
   CHECK(s.gradient(0)[1] == doctest::Approx(-0.75));
+}
+
+// The stage loops read N and dN two nodes at a time (pair_weights); the
+// pairs must visit every stencil node once, with the node's own N and dN,
+// for even and odd supports.
+template <int D, class Shape>
+void check_pairs_match_nodes() {
+  Index<D> cells;
+  cells.fill(8);
+  const Grid<D> grid(Vec<D>::Zero(), Vec<D>::Ones(), cells);
+  const Vec<D> x = Vec<D>::Constant(3.3);
+  const Stencil<D, Shape> s(grid, x, Vec<D>::Constant(0.25));
+  std::map<std::size_t, int> visits;
+  s.for_each_node_pair([&]<int Count>(int line, int k, std::size_t n) {
+    const auto w = s.template pair_weights<Count>(line, k);
+    for (int lane = 0; lane < Count; ++lane) {
+      const int a = line * Shape::support + k + lane;
+      ++visits[n + lane];
+      CHECK(s.node(a) == n + lane);
+      CHECK(w.N[lane] == s.N(a));
+      for (int j = 0; j < D; ++j) CHECK(w.dN[j][lane] == s.gradient(a)[j]);
+    }
+    if constexpr (Count == 1) CHECK(w.N[1] == 0.0);
+  });
+  CHECK(visits.size() == static_cast<std::size_t>(s.size));
+  for (auto [node, count] : visits) CHECK(count == 1);
+}
+
+TEST_CASE("node pairs cover the stencil with each node's N and dN") {
+  check_pairs_match_nodes<1, LinearShape>();
+  check_pairs_match_nodes<2, QuadraticBSpline>();
+  check_pairs_match_nodes<3, LinearShape>();
+  check_pairs_match_nodes<3, GimpShape>();
+  check_pairs_match_nodes<3, QuadraticBSpline>();
+  check_pairs_match_nodes<3, CubicBSpline>();
 }
