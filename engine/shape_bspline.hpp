@@ -18,7 +18,7 @@ struct QuadraticBSpline {
 
   [[gnu::always_inline]] static void stencil(double g, double inv_h, double, int& base, double (&w)[support],
                       double (&dw)[support]) {
-    base = floor_to_int(g - 0.5);
+    base = floor_nonnegative(g - 0.5);  // g >= reach_below = 1
     const double t = g - base;  // in [0.5, 1.5): distance to the first node
     const double a = 1.5 - t, b = t - 1.0, c = t - 0.5;
     w[0] = 0.5 * a * a;
@@ -38,7 +38,7 @@ struct CubicBSpline {
 
   [[gnu::always_inline]] static void stencil(double g, double inv_h, double, int& base, double (&w)[support],
                       double (&dw)[support]) {
-    const int c = floor_to_int(g);
+    const int c = floor_nonnegative(g);  // g >= reach_below = 1
     base = c - 1;
     const double t = g - c, u = 1.0 - t;  // t in [0, 1)
     w[0] = u * u * u / 6.0;

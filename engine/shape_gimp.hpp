@@ -24,7 +24,7 @@ struct GimpShape {
 
   [[gnu::always_inline]] static void stencil(double g, double inv_h, double lp, int& base, double (&w)[support],
                       double (&dw)[support]) {
-    base = floor_to_int(g) - 1;
+    base = floor_nonnegative(g) - 1;  // g >= reach_below = 1
     for (int k = 0; k < support; ++k) {
       const double d = g - (base + k);  // in cells
       const double r = std::abs(d), sign = d < 0.0 ? -1.0 : 1.0;

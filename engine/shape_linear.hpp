@@ -22,7 +22,7 @@ struct LinearShape {
   // derivatives dw = dN/dx.
   [[gnu::always_inline]] static void stencil(double g, double inv_h, double, int& base, double (&w)[support],
                       double (&dw)[support]) {
-    base = floor_to_int(g);
+    base = floor_nonnegative(g);  // g >= 0 inside the grid
     const double s = g - base;
     w[0] = 1.0 - s;
     w[1] = s;

@@ -36,6 +36,11 @@ constexpr int voigt_slot(int i, int j) {
   return i - (g < static_cast<double>(i));
 }
 
+// floor(g) for g >= 0, where it is truncation: one instruction. For the
+// grid coordinates of particles inside the grid (build_model and g2p_motion
+// keep every particle where its stencil has nodes, so g >= reach_below).
+[[gnu::always_inline]] inline int floor_nonnegative(double g) { return static_cast<int>(g); }
+
 // sigma : eps for symmetric tensors in Voigt order with tensor shear terms.
 inline double double_contraction(const Voigt& a, const Voigt& b) {
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + 2.0 * (a[3] * b[3] + a[4] * b[4] + a[5] * b[5]);

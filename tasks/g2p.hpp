@@ -134,12 +134,12 @@ void g2p(Model<D, Shape>& model) {
           for (int d = 0; d < D; ++d) {
             const double g_new = (x_new[d] - grid.origin[d]) * grid.inv_h[d];
             inside = inside && g_new >= Shape::reach_below && g_new < grid.cells[d] - Shape::reach_above + 1;
-            c_new[d] = inside ? floor_to_int(g_new) : 0;
+            c_new[d] = inside ? floor_nonnegative(g_new) : 0;
           }
           if (inside) {
-            const Index<D> c_old = grid.cell_of(b.x[p]);
             for (int d = 0; d < D; ++d) {
-              one_cell = one_cell && std::abs(c_new[d] - c_old[d]) <= 1;
+              const int c_old = floor_nonnegative((b.x[p][d] - grid.origin[d]) * grid.inv_h[d]);
+              one_cell = one_cell && std::abs(c_new[d] - c_old) <= 1;
               stays = stays && c_new[d] >= stay_lo[d] && c_new[d] <= stay_hi[d];
             }
           }
