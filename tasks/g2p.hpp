@@ -90,6 +90,12 @@ void g2p(Model<D, Shape>& model) {
       stay_lo[d] = bc[d] * Layout::block_cells - Layout::drift_limit + 1;
       stay_hi[d] = bc[d] * Layout::block_cells + Layout::block_cells - 2 + Layout::drift_limit;
     }
+    // Grid coordinates where a particle's stencil has nodes: [g_lo, g_hi).
+    Vec<D> g_lo, g_hi;
+    for (int d = 0; d < D; ++d) {
+      g_lo[d] = Shape::reach_below;
+      g_hi[d] = grid.cells[d] - Shape::reach_above + 1;
+    }
     double block_max_sq = 0.0;
     const double* velocity[D];
     const double* velocity_change[D];
@@ -133,7 +139,7 @@ void g2p(Model<D, Shape>& model) {
           Index<D> c_new{};
           for (int d = 0; d < D; ++d) {
             const double g_new = (x_new[d] - grid.origin[d]) * grid.inv_h[d];
-            inside = inside && g_new >= Shape::reach_below && g_new < grid.cells[d] - Shape::reach_above + 1;
+            inside = inside && g_new >= g_lo[d] && g_new < g_hi[d];
             c_new[d] = inside ? floor_nonnegative(g_new) : 0;
           }
           if (inside) {
