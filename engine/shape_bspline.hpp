@@ -17,7 +17,7 @@ struct QuadraticBSpline {
   static constexpr int reach_above = 2;
 
   [[gnu::always_inline]] static void stencil(double g, double inv_h, double, int& base, double (&w)[support],
-                      double (&dw)[support]) {
+                                             double (&dw)[support]) {
     base = floor_nonnegative(g - 0.5);  // g >= reach_below = 1
     const double t = g - base;  // in [0.5, 1.5): distance to the first node
     const double a = 1.5 - t, b = t - 1.0, c = t - 0.5;
@@ -37,7 +37,7 @@ struct CubicBSpline {
   static constexpr int reach_above = 2;
 
   [[gnu::always_inline]] static void stencil(double g, double inv_h, double, int& base, double (&w)[support],
-                      double (&dw)[support]) {
+                                             double (&dw)[support]) {
     const int c = floor_nonnegative(g);  // g >= reach_below = 1
     base = c - 1;
     const double t = g - c, u = 1.0 - t;  // t in [0, 1)

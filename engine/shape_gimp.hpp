@@ -23,7 +23,7 @@ struct GimpShape {
   static constexpr int reach_above = 2;
 
   [[gnu::always_inline]] static void stencil(double g, double inv_h, double lp, int& base, double (&w)[support],
-                      double (&dw)[support]) {
+                                             double (&dw)[support]) {
     base = floor_nonnegative(g) - 1;  // g >= reach_below = 1
     for (int k = 0; k < support; ++k) {
       const double d = g - (base + k);  // in cells

@@ -21,7 +21,7 @@ struct LinearShape {
   // half-width l_p / h (unused here): first node `base`, weights w and
   // derivatives dw = dN/dx.
   [[gnu::always_inline]] static void stencil(double g, double inv_h, double, int& base, double (&w)[support],
-                      double (&dw)[support]) {
+                                             double (&dw)[support]) {
     base = floor_nonnegative(g);  // g >= 0 inside the grid
     const double s = g - base;
     w[0] = 1.0 - s;

@@ -22,8 +22,9 @@ namespace detail {
 
 // The material update of particle p for its velocity gradient L (g2p_stress).
 template <int D, class Shape, StressState S, class MaterialModel>
-[[gnu::always_inline]] inline void update_particle_stress(Model<D, Shape>& model, ParticleBatch<D>& b, std::size_t p, const double (&L)[D][D],
-                            const MaterialModel& material, typename MaterialModel::State& state) {
+[[gnu::always_inline]] inline void update_particle_stress(Model<D, Shape>& model, ParticleBatch<D>& b, std::size_t p,
+                                                         const double (&L)[D][D], const MaterialModel& material,
+                                                         typename MaterialModel::State& state) {
   const double dt = model.dt;
   Voigt deps{};
   for (int i = 0; i < D; ++i)
