@@ -5,7 +5,10 @@
 //   - particle-steps per second through the flow graph, 1 and 2 threads,
 //     and the 2-thread speedup;
 //   - the serial reference step (stages called in order, no graph) on one
-//     thread, and the graph's overhead relative to it;
+//     thread, and the graph's rate relative to it (noisy: two timings);
+//   - the flow graph's own cost per step, measured alone (the USL wiring
+//     with stages that do nothing, 2 threads), as a share of the 2-thread
+//     step;
 //   - set-up time (particles generated and sorted) per million particles;
 //   - peak resident memory per particle (whole process, and above the
 //     resident memory before the model was built);
@@ -138,6 +141,18 @@ Timing time_steps(const Case& c, int threads, bool serial, int steps) {
   return t;
 }
 
+// Seconds per step of the flow graph alone: the USL wiring with empty
+// stages, triggered many times on 2 threads.
+double empty_graph_seconds_per_step() {
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 2);
+  StepGraph graph(wiring_of(Scheme::usl), [](const StageGroup&) {});
+  for (int i = 0; i < 1000; ++i) graph.run();  // warm-up
+  const int runs = 100000;
+  const auto start = Clock::now();
+  for (int i = 0; i < runs; ++i) graph.run();
+  return std::chrono::duration<double>(Clock::now() - start).count() / runs;
+}
+
 // The bench's two measurements, compiled for one shape function.
 struct ShapeRunner {
   Timing (*time_steps)(const Case&, int threads, bool serial, int steps);
@@ -196,15 +211,17 @@ int main(int argc, char** argv) {
   const std::vector<StageGroup> nodes = wiring_of(Scheme::usl).nodes;
   std::printf("3D elastic block on a fixed base under gravity, USL, %s shape functions; medians of %d runs\n",
               shape.c_str(), repeats);
-  std::printf("%10s %6s %10s %10s %8s %10s %8s %9s %9s %9s %8s %8s  %s\n", "particles", "steps", "1 thr", "2 thr",
-              "speedup", "serial 1t", "graph", "setup", "B/p peak", "B/p model", "output", "output",
+  const double graph_seconds = empty_graph_seconds_per_step();
+  std::printf("flow graph alone (USL wiring, empty stages, 2 threads): %.2f us per step\n", 1e6 * graph_seconds);
+  std::printf("%10s %6s %10s %10s %8s %10s %8s %8s %9s %9s %9s %8s %8s  %s\n", "particles", "steps", "1 thr", "2 thr",
+              "speedup", "serial 1t", "graph vs", "graph", "setup", "B/p peak", "B/p model", "output", "output",
               "shares of the graph's nodes at 1 thread");
-  std::printf("%10s %6s %10s %10s %8s %10s %8s %9s %9s %9s %8s %8s\n", "", "", "Mp-st/s", "Mp-st/s", "", "Mp-st/s",
-              "overhead", "s/Mp", "", "", "B/p", "us/p");
+  std::printf("%10s %6s %10s %10s %8s %10s %8s %8s %9s %9s %9s %8s %8s\n", "", "", "Mp-st/s", "Mp-st/s", "", "Mp-st/s",
+              "serial", "cost", "s/Mp", "", "", "B/p", "us/p");
   std::ofstream csv;
   if (!csv_path.empty()) {
     csv.open(csv_path);
-    csv << "particles,steps,rate_1t,rate_2t,speedup,rate_serial_1t,graph_overhead,setup_s_per_million,"
+    csv << "particles,steps,rate_1t,rate_2t,speedup,rate_serial_1t,graph_vs_serial,graph_cost,setup_s_per_million,"
            "bytes_per_particle_peak,bytes_per_particle_model,output_bytes_per_particle,output_seconds_per_particle";
     for (const StageGroup& node : nodes) csv << ",share_" << group_name(node);
     csv << "\n";
@@ -236,13 +253,15 @@ int main(int argc, char** argv) {
     for (std::size_t i = 0; i < nodes.size(); ++i) {
       stage_text << "[" << group_name(nodes[i]) << "] " << std::lround(100 * median(shares[i])) << "% ";
     }
-    std::printf("%10zu %6d %10.2f %10.2f %8.2f %10.2f %7.1f%% %9.3f %9.0f %9.0f %8.0f %8.3f  %s\n", n, steps,
-                m1 / 1e6, m2 / 1e6, m2 / m1, ms / 1e6, 100.0 * (ms / m1 - 1.0), median(setup) / (n / 1e6), bpp_peak,
-                bpp_model, out_bytes, 1e6 * out_seconds, stage_text.str().c_str());
+    const double graph_cost = graph_seconds / (n / m2);  // share of a 2-thread step
+    std::printf("%10zu %6d %10.2f %10.2f %8.2f %10.2f %7.1f%% %7.3f%% %9.3f %9.0f %9.0f %8.0f %8.3f  %s\n", n, steps,
+                m1 / 1e6, m2 / 1e6, m2 / m1, ms / 1e6, 100.0 * (ms / m1 - 1.0), 100.0 * graph_cost,
+                median(setup) / (n / 1e6), bpp_peak, bpp_model, out_bytes, 1e6 * out_seconds,
+                stage_text.str().c_str());
     std::fflush(stdout);
     if (csv) {
       csv << n << "," << steps << "," << m1 << "," << m2 << "," << m2 / m1 << "," << ms << "," << (ms / m1 - 1.0)
-          << "," << median(setup) / (n / 1e6) << "," << bpp_peak << "," << bpp_model << "," << out_bytes << ","
+          << "," << graph_cost << "," << median(setup) / (n / 1e6) << "," << bpp_peak << "," << bpp_model << "," << out_bytes << ","
           << out_seconds;
       for (const auto& share : shares) csv << "," << median(share);
       csv << "\n";
