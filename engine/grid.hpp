@@ -57,10 +57,13 @@ struct Grid {
     return index;
   }
 
+  // Grid coordinate of x along axis d, in cells from the origin.
+  [[gnu::always_inline]] double coordinate(const Vec<D>& x, int d) const { return (x[d] - origin[d]) * inv_h[d]; }
+
   // The cell that holds x (indices may lie outside the grid).
   [[gnu::always_inline]] Index<D> cell_of(const Vec<D>& x) const {
     Index<D> c;
-    for (int d = 0; d < D; ++d) c[d] = floor_to_int((x[d] - origin[d]) * inv_h[d]);
+    for (int d = 0; d < D; ++d) c[d] = floor_to_int(coordinate(x, d));
     return c;
   }
 

@@ -1,7 +1,9 @@
 // A running simulation of one case: the Model, the step graph wired for the
 // case's scheme, and what the time loop and the writers read off it.
 #pragma once
+#include <algorithm>
 #include <functional>
+#include <initializer_list>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -106,8 +108,9 @@ class Simulation {
     if (observer_)
       for (Stage s : stages) observer_(s);
     using S = Stage;
-    if (stages == StageGroup{S::p2g_momentum, S::p2g_force}) return p2g_momentum_and_force(model_);
-    if (stages == StageGroup{S::g2p_motion, S::g2p_stress}) return g2p_motion_and_stress(model_);
+    auto is = [&](std::initializer_list<Stage> group) { return std::ranges::equal(stages, group); };
+    if (is({S::p2g_momentum, S::p2g_force})) return p2g_momentum_and_force(model_);
+    if (is({S::g2p_motion, S::g2p_stress})) return g2p_motion_and_stress(model_);
     if (stages.size() != 1) throw std::logic_error("no single pass runs the stages " + group_name(stages));
     switch (stages.front()) {
       case Stage::p2g_momentum: p2g_momentum(model_); break;

@@ -35,8 +35,7 @@ struct Stencil {
     double w[D][S], dw[D][S];
     Index<D> base;
     for (int d = 0; d < D; ++d) {
-      const double g = (x[d] - grid.origin[d]) * grid.inv_h[d];
-      Shape::stencil(g, grid.inv_h[d], half_width[d], base[d], w[d], dw[d]);
+      Shape::stencil(grid.coordinate(x, d), grid.inv_h[d], half_width[d], base[d], w[d], dw[d]);
     }
     for (int k = 0; k < S; ++k) {
       w_x[k] = w[0][k];
@@ -60,14 +59,13 @@ struct Stencil {
 
   // N and dN of nodes k, k + 1 of `line` (Count = 2), or of node k and 0
   // (Count = 1).
-  template <int Count>
   struct PairWeights {
     NodePair N;
     NodePair dN[D];
   };
   template <int Count>
-  [[gnu::always_inline]] PairWeights<Count> pair_weights(int line, int k) const {
-    PairWeights<Count> p;
+  [[gnu::always_inline]] PairWeights pair_weights(int line, int k) const {
+    PairWeights p;
     const NodePair wx = load_nodes<Count>(&w_x[k]);
     p.N = wx * w_yz[line];
     if constexpr (WithGradient) {

@@ -82,6 +82,16 @@ void g2p(Model<D, Shape>& model) {
   // Largest particle speed of the step, for the time step and the guard:
   // per block, then combined (max is exact, so any order gives the same).
   std::atomic<double> max_speed_sq{0.0};
+  // Grid coordinates where a particle's stencil has nodes: [g_lo, g_hi).
+  Vec<D> g_lo, g_hi;
+  const double* velocity[D];
+  const double* velocity_change[D];
+  for (int d = 0; d < D; ++d) {
+    g_lo[d] = Shape::reach_below;
+    g_hi[d] = grid.cells[d] - Shape::reach_above + 1;
+    velocity[d] = grid.velocity[d].data();
+    velocity_change[d] = grid.velocity_change[d].data();
+  }
   gather_by_block(model, [&](ParticleBatch<D>& b, std::uint32_t first, std::uint32_t last, std::uint32_t block) {
     // The cells the block's particles may reach before a re-sort is due:
     // fewer than drift_limit cells outside the block, per axis.
@@ -91,19 +101,7 @@ void g2p(Model<D, Shape>& model) {
       stay_lo[d] = bc[d] * Layout::block_cells - Layout::drift_limit + 1;
       stay_hi[d] = bc[d] * Layout::block_cells + Layout::block_cells - 2 + Layout::drift_limit;
     }
-    // Grid coordinates where a particle's stencil has nodes: [g_lo, g_hi).
-    Vec<D> g_lo, g_hi;
-    for (int d = 0; d < D; ++d) {
-      g_lo[d] = Shape::reach_below;
-      g_hi[d] = grid.cells[d] - Shape::reach_above + 1;
-    }
     double block_max_sq = 0.0;
-    const double* velocity[D];
-    const double* velocity_change[D];
-    for (int d = 0; d < D; ++d) {
-      velocity[d] = grid.velocity[d].data();
-      velocity_change[d] = grid.velocity_change[d].data();
-    }
     auto particles = [&](auto&& update_stress) {
       for (std::uint32_t p = first; p < last; ++p) {
         const Stencil<D, Shape, Stress> s(grid, b.x[p], b.half_width);
@@ -139,13 +137,13 @@ void g2p(Model<D, Shape>& model) {
           bool inside = true, one_cell = true, stays = true;
           Index<D> c_new{};
           for (int d = 0; d < D; ++d) {
-            const double g_new = (x_new[d] - grid.origin[d]) * grid.inv_h[d];
+            const double g_new = grid.coordinate(x_new, d);
             inside = inside && g_new >= g_lo[d] && g_new < g_hi[d];
             c_new[d] = inside ? floor_nonnegative(g_new) : 0;
           }
           if (inside) {
             for (int d = 0; d < D; ++d) {
-              const int c_old = floor_nonnegative((b.x[p][d] - grid.origin[d]) * grid.inv_h[d]);
+              const int c_old = floor_nonnegative(grid.coordinate(b.x[p], d));
               one_cell = one_cell && std::abs(c_new[d] - c_old) <= 1;
               stays = stays && c_new[d] >= stay_lo[d] && c_new[d] <= stay_hi[d];
             }

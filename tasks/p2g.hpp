@@ -26,14 +26,14 @@ void p2g(Model<D, Shape>& model) {
     }
   });
   const Vec<D> g = model.gravity;
+  double* mass = grid.mass.data();
+  double* momentum[D];
+  double* force[D];
+  for (int d = 0; d < D; ++d) {
+    momentum[d] = grid.momentum[d].data();
+    force[d] = grid.force[d].data();
+  }
   scatter_by_colour(model, [&](ParticleBatch<D>& b, std::uint32_t first, std::uint32_t last, std::uint32_t) {
-    double* mass = grid.mass.data();
-    double* momentum[D];
-    double* force[D];
-    for (int d = 0; d < D; ++d) {
-      momentum[d] = grid.momentum[d].data();
-      force[d] = grid.force[d].data();
-    }
     for (std::uint32_t p = first; p < last; ++p) {
       const Stencil<D, Shape, Force> s(grid, b.x[p], b.half_width);
       const double m = b.mass[p];
