@@ -8,58 +8,25 @@
 #include <string>
 #include <vector>
 
+#include <CLI/CLI.hpp>
 #include <spdlog/spdlog.h>
 #include <tbb/global_control.h>
+#include <tbb/info.h>
 
-#include "engine/run_case.hpp"
-#include "engine/run_sweep.hpp"
-#include "engine/simulation.hpp"
-#include "io/case_reader.hpp"
+#include "app/run_case.hpp"
+#include "app/run_sweep.hpp"
+#include "core/errors.hpp"
 #include "io/sweep_file.hpp"
 
 namespace {
-
-constexpr const char* usage = R"(flowmpm - explicit Material Point Method for solid mechanics
-
-Usage:
-  flowmpm run CASE.toml [--threads N] [--output DIR] [--set KEY=VALUE ...] [--quiet]
-  flowmpm check CASE.toml [--set KEY=VALUE ...]
-  flowmpm sweep SWEEP.toml [--jobs N] [--threads N] [--output DIR] [--quiet]
-  flowmpm --help | --version
-
-Commands:
-  run     run the case; writes results.h5, results.xdmf (open in ParaView),
-          timeseries.csv and summary.json to the output directory
-  check   read and validate the case and describe the model it builds
-  sweep   run every case of a sweep file (a base case and the keys to vary);
-          writes sweep.csv (one row per case: the varied values, particles,
-          steps, wall time, particle-steps/s, error norms) and each case's
-          results in cases/NNN/ of the output directory; running it again
-          skips the cases already completed
-
-Options:
-  --threads N       worker threads (default: all cores); results do not
-                    depend on N; a sweep splits them between its jobs
-  --output DIR      output directory (overrides output.directory, or the
-                    sweep file's output)
-  --jobs N          sweep: cases run side by side (default 1)
-  --set KEY=VALUE   override a key of the case, VALUE in TOML syntax, e.g.
-                    --set analysis.dt=0.001 --set analysis.scheme=musl
-                    --set bodies.0.velocity=[1.0,0,0]
-  --quiet           log warnings and errors only
-
-Exit status: 0 on success, 1 for a bad case file, sweep file or command
-line, 2 if the simulation (or a case of the sweep) failed, 130 if
-interrupted.
-)";
 
 std::atomic<bool> interrupted{false};
 void on_signal(int) { interrupted = true; }
 
 struct Arguments {
   std::string command, case_file, output;
-  int threads = 0;
-  int jobs = 0;  // 0: not given
+  int threads = 0;  // 0: all cores
+  int jobs = 1;
   bool quiet = false;
   std::vector<std::string> overrides;
 };
@@ -69,52 +36,68 @@ struct Arguments {
   std::exit(1);
 }
 
+// Parses the command line (CLI11): one command, each with its own options
+// and --help. Exits 0 after --help or --version, 1 on misuse.
 Arguments parse(int argc, char** argv) {
   Arguments a;
-  std::vector<std::string> args(argv + 1, argv + argc);
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& s = args[i];
-    auto value = [&](const char* option) -> std::string {
-      if (i + 1 >= args.size()) bad_usage(std::string(option) + " needs a value");
-      return args[++i];
-    };
-    if (s == "--help" || s == "-h") {
-      std::cout << usage;
-      std::exit(0);
-    } else if (s == "--version") {
-      std::cout << "flowmpm " << FLOWMPM_VERSION << "\n";
-      std::exit(0);
-    } else if (s == "--threads" || s == "--jobs") {
-      const std::string v = value(s.c_str());
-      char* end = nullptr;
-      const long n = std::strtol(v.c_str(), &end, 10);
-      if (*end != '\0' || n < 1 || n > 1024) bad_usage(s + ": expected a positive integer, got '" + v + "'");
-      (s == "--threads" ? a.threads : a.jobs) = static_cast<int>(n);
-    } else if (s == "--output") {
-      a.output = value("--output");
-    } else if (s == "--set") {
-      a.overrides.push_back(value("--set"));
-    } else if (s == "--quiet") {
-      a.quiet = true;
-    } else if (s.starts_with("-")) {
-      bad_usage("unknown option '" + s + "'");
-    } else if (a.command.empty()) {
-      a.command = s;
-    } else if (a.case_file.empty()) {
-      a.case_file = s;
-    } else {
-      bad_usage("unexpected argument '" + s + "'");
-    }
+  CLI::App app("flowmpm - explicit Material Point Method for solid mechanics", "flowmpm");
+  app.set_version_flag("--version", std::string("flowmpm ") + FLOWMPM_VERSION);
+  app.footer(
+      "Exit status: 0 on success, 1 for a bad case file, sweep file or command line, 2 if the simulation "
+      "(or a case of the sweep) failed, 130 if interrupted. `flowmpm COMMAND --help` lists a command's "
+      "options; README.md has the case file keys.");
+  const auto threads = [&](CLI::App* command) {
+    command->add_option("--threads", a.threads, "worker threads (default: all cores); results do not depend on it")
+        ->check(CLI::Range(1, 1024));
+  };
+  const auto quiet = [&](CLI::App* command) { command->add_flag("--quiet", a.quiet, "log warnings and errors only"); };
+  const auto overrides = [&](CLI::App* command) {
+    command
+        ->add_option("--set", a.overrides,
+                     "override a key of the case, VALUE in TOML syntax (a bare word is a string): "
+                     "--set analysis.dt=0.001 --set bodies.0.velocity=[1.0,0,0]")
+        ->type_name("KEY=VALUE")
+        ->allow_extra_args(false);
+  };
+
+  CLI::App* run = app.add_subcommand(
+      "run", "run a case; writes results.h5, results.xdmf (open in ParaView), timeseries.csv and summary.json");
+  run->add_option("case", a.case_file, "the case file (TOML)")->type_name("CASE.toml");
+  threads(run);
+  run->add_option("--output", a.output, "output directory (overrides output.directory)");
+  overrides(run);
+  quiet(run);
+
+  CLI::App* check = app.add_subcommand("check", "read and validate a case and describe the model it builds");
+  check->add_option("case", a.case_file, "the case file (TOML)")->type_name("CASE.toml");
+  overrides(check);
+
+  CLI::App* sweep = app.add_subcommand(
+      "sweep",
+      "run every case of a sweep file (a base case and the keys to vary); writes sweep.csv and each case's "
+      "results in cases/NNN/; running it again skips the cases already completed");
+  sweep->add_option("sweep", a.case_file, "the sweep file (TOML)")->type_name("SWEEP.toml");
+  sweep->add_option("--jobs", a.jobs, "cases run side by side (default 1); the threads are split between them")
+      ->check(CLI::Range(1, 1024));
+  threads(sweep);
+  sweep->add_option("--output", a.output, "output directory (overrides the sweep file's output)");
+  quiet(sweep);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    std::exit(app.exit(e));
+  } catch (const CLI::CallForAllHelp& e) {
+    std::exit(app.exit(e));
+  } catch (const CLI::CallForVersion& e) {
+    std::exit(app.exit(e));
+  } catch (const CLI::ParseError& e) {
+    bad_usage(e.what());
   }
-  if (a.command.empty()) bad_usage("no command given");
-  if (a.command != "run" && a.command != "check" && a.command != "sweep") {
-    bad_usage("unknown command '" + a.command + "'");
-  }
+  const std::vector<CLI::App*> chosen = app.get_subcommands();
+  if (chosen.empty()) bad_usage("no command given: run, check or sweep");
+  a.command = chosen.front()->get_name();
   if (a.case_file.empty()) bad_usage(a.command + ": no " + (a.command == "sweep" ? "sweep" : "case") + " file given");
-  if (a.command == "sweep" && !a.overrides.empty()) {
-    bad_usage("sweep: --set is not supported; vary the key in the sweep file");
-  }
-  if (a.command != "sweep" && a.jobs > 0) bad_usage(a.command + ": --jobs is for sweep only");
   return a;
 }
 
@@ -129,7 +112,7 @@ int sweep(const Arguments& args, int threads) {
   }
   if (!args.output.empty()) s.output = args.output;
   flowmpm::SweepOptions options;
-  options.jobs = std::max(1, args.jobs);
+  options.jobs = args.jobs;
   options.threads = threads;
   options.interrupt = &interrupted;
   try {
@@ -200,7 +183,7 @@ int main(int argc, char** argv) {
                    s.energy_initial, s.energy_final, 100.0 * s.energy_drift());
     }
     for (const auto& [name, value] : s.errors) {
-      spdlog::info("error against the {} reference: {} = {:.4g}", c.reference.type, name, value);
+      spdlog::info("error against the {} reference: {} = {:.4g}", c.reference->type(), name, value);
     }
   } catch (const flowmpm::CaseError& e) {
     spdlog::error("{}", e.what());

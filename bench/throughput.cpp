@@ -35,9 +35,9 @@
 
 #include <tbb/global_control.h>
 
-#include "engine/shape_bspline.hpp"
-#include "engine/shape_gimp.hpp"
-#include "engine/shape_linear.hpp"
+#include "discretisation/shape_functions.hpp"
+#include "discretisation/stable_time_step.hpp"
+#include "engine/schemes.hpp"
 #include "engine/simulation.hpp"
 #include "io/results_h5.hpp"
 
@@ -49,13 +49,12 @@ namespace {
 // The block: k x k x k cells of 8 particles each (2 per axis), resting on
 // the plane of nodes two cells above the grid's bottom, which is held fixed
 // (two cells of grid around the block leave room for every shape function).
-Case block_case(std::size_t target_particles, const std::string& shape) {
+SystemSpec block_case(std::size_t target_particles, const std::string& shape) {
   const int k = std::max(2, static_cast<int>(std::lround(std::cbrt(target_particles / 8.0))));
   const double h = 1.0 / k;  // a 1 m cube
-  Case c;
-  c.name = "bench_block";
+  SystemSpec c;
+  c.source = "bench_block";
   c.dimension = 3;
-  c.scheme = Scheme::usl;
   c.shape_function = shape;
   c.grid.origin = {-2 * h, -2 * h, -2 * h};
   c.grid.cell_size = {h, h, h};
@@ -97,19 +96,19 @@ double median(std::vector<double> v) {
 // Cost of one output step: the particle snapshot written to results.h5
 // (all fields), in bytes and seconds per particle.
 template <class Shape>
-std::pair<double, double> output_cost(const Case& c) {
-  Simulation<3, Shape> sim(c);
+std::pair<double, double> output_cost(const SystemSpec& c) {
+  Simulation<3, Shape> sim(c, scheme_named("usl").wiring, c.dt);
   const auto dir = std::filesystem::temp_directory_path() / "flowmpm-bench-output";
   std::filesystem::create_directories(dir);
   const auto start = Clock::now();
   {
-    ResultsH5 h5(dir / "results.h5", OutputFields{});
-    h5.write(sim.snapshot());
+    ResultsH5 h5(dir / "results.h5");
+    h5.write(sim.snapshot(output_field_names()));
   }
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
   const double bytes = static_cast<double>(std::filesystem::file_size(dir / "results.h5"));
   std::filesystem::remove_all(dir);
-  const double n = static_cast<double>(sim.model().particle_count());
+  const double n = static_cast<double>(sim.system().particle_count());
   return {bytes / n, seconds / n};
 }
 
@@ -122,13 +121,13 @@ struct Timing {
 };
 
 template <class Shape>
-Timing time_steps(const Case& c, int threads, bool serial, int steps) {
+Timing time_steps(const SystemSpec& c, int threads, bool serial, int steps) {
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
   const auto t0 = Clock::now();
-  Simulation<3, Shape> sim(c);
+  Simulation<3, Shape> sim(c, scheme_named("usl").wiring, c.dt);
   Timing t;
   t.setup = std::chrono::duration<double>(Clock::now() - t0).count();
-  t.particles = sim.model().particle_count();
+  t.particles = sim.system().particle_count();
   for (int s = 0; s < 2; ++s) serial ? sim.advance_serial() : sim.advance();  // warm-up
   const auto before = sim.graph().node_seconds();
   const auto start = Clock::now();
@@ -137,7 +136,7 @@ Timing time_steps(const Case& c, int threads, bool serial, int steps) {
   t.rate = static_cast<double>(t.particles) * steps / seconds;
   for (std::size_t i = 0; i < before.size(); ++i)
     t.node_share.push_back((sim.graph().node_seconds()[i] - before[i]) / seconds);
-  t.sorts = sim.model().sorts;
+  t.sorts = sim.system().sorts;
   return t;
 }
 
@@ -145,7 +144,7 @@ Timing time_steps(const Case& c, int threads, bool serial, int steps) {
 // stages, triggered many times on 2 threads.
 double empty_graph_seconds_per_step() {
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 2);
-  StepGraph graph(wiring_of(Scheme::usl), [](const StageGroup&) {});
+  StepGraph graph(scheme_named("usl").wiring, [](int) {});
   for (int i = 0; i < 1000; ++i) graph.run();  // warm-up
   const int runs = 100000;
   const auto start = Clock::now();
@@ -155,22 +154,17 @@ double empty_graph_seconds_per_step() {
 
 // The bench's two measurements, compiled for one shape function.
 struct ShapeRunner {
-  Timing (*time_steps)(const Case&, int threads, bool serial, int steps);
-  std::pair<double, double> (*output_cost)(const Case&);
+  Timing (*time_steps)(const SystemSpec&, int threads, bool serial, int steps);
+  std::pair<double, double> (*output_cost)(const SystemSpec&);
 };
 
-template <class Shape>
-ShapeRunner runner_for() {
-  return {&time_steps<Shape>, &output_cost<Shape>};
-}
-
 ShapeRunner runner_named(const std::string& shape) {
-  if (shape == "linear") return runner_for<LinearShape>();
-  if (shape == "gimp") return runner_for<GimpShape>();
-  if (shape == "bspline2") return runner_for<QuadraticBSpline>();
-  if (shape == "bspline3") return runner_for<CubicBSpline>();
-  std::cerr << "--shape: expected linear, gimp, bspline2 or bspline3, got '" << shape << "'\n";
-  std::exit(1);
+  const std::vector<std::string> known = shape_function_names();
+  if (std::ranges::find(known, shape) == known.end()) {
+    std::cerr << "--shape: expected one of " << quoted_list(known) << ", got '" << shape << "'\n";
+    std::exit(1);
+  }
+  return with_shape_function(shape, []<class Shape>() { return ShapeRunner{&time_steps<Shape>, &output_cost<Shape>}; });
 }
 
 std::vector<double> parse_sizes(const std::string& text) {
@@ -208,7 +202,7 @@ int main(int argc, char** argv) {
   }
 
   const ShapeRunner runner = runner_named(shape);
-  const std::vector<StageGroup> nodes = wiring_of(Scheme::usl).nodes;
+  const std::vector<StageGroup> nodes = scheme_named("usl").wiring.nodes;
   std::printf("3D elastic block on a fixed base under gravity, USL, %s shape functions; medians of %d runs\n",
               shape.c_str(), repeats);
   const double graph_seconds = empty_graph_seconds_per_step();
@@ -227,7 +221,7 @@ int main(int argc, char** argv) {
     csv << "\n";
   }
   for (double size : sizes) {
-    const Case c = block_case(static_cast<std::size_t>(size), shape);
+    const SystemSpec c = block_case(static_cast<std::size_t>(size), shape);
     std::size_t n = 0;
     std::vector<double> r1, r2, rs, setup;
     std::vector<std::vector<double>> shares(nodes.size());

@@ -1,32 +1,59 @@
-// What the time series and the summary report of a model's state: kinetic
-// and strain energy, and per body the volume-weighted mean stress and strain.
+// What the time series and the summary report of a system's state: kinetic
+// and stored energy, and per body the volume-weighted mean stress and strain.
 // Serial, in particle order, so the numbers do not depend on the thread count.
 #pragma once
-#include "engine/model.hpp"
-#include "io/timeseries_csv.hpp"
+#include <array>
+#include <cstdint>
+#include <type_traits>
+#include <vector>
+
+#include "discretisation/discrete_system.hpp"
 
 namespace flowmpm {
 
-// `body_count`: the case's bodies (one batch each).
+struct BodyMeans {
+  std::array<double, 6> stress{};  // Pa, volume-weighted mean, Voigt order
+  std::array<double, 6> strain{};  // -, volume-weighted mean
+};
+
+struct Diagnostics {
+  std::int64_t step = 0;
+  double time = 0.0;            // s
+  double kinetic_energy = 0.0;  // J (per unit thickness in 2D, cross-section in 1D)
+  double strain_energy = 0.0;   // J: the materials' stored (recoverable) energy
+  std::vector<BodyMeans> bodies;  // per body of the spec
+};
+
+// `body_count`: the spec's bodies (one batch each).
 template <int D, class Shape>
-TimeseriesRow diagnostics(const Model<D, Shape>& model, std::size_t body_count) {
-  TimeseriesRow row;
-  row.step = model.step;
-  row.time = model.t;
+Diagnostics diagnostics(const DiscreteSystem<D, Shape>& system, std::size_t body_count) {
+  Diagnostics row;
+  row.step = system.step;
+  row.time = system.t;
   row.bodies.resize(body_count);
   std::vector<double> body_volume(body_count, 0.0);
-  for (const auto& b : model.batches) {
+  for (const auto& b : system.batches) {
     BodyMeans& means = row.bodies[b.body];
     for (std::size_t p = 0; p < b.size(); ++p) {
       row.kinetic_energy += 0.5 * b.mass[p] * b.v[p].squaredNorm();
-      // Elastic strain energy density sigma : eps / 2 (small strain).
-      row.strain_energy += 0.5 * b.volume[p] * double_contraction(b.stress[p], b.strain[p]);
       for (int i = 0; i < 6; ++i) {
         means.stress[i] += b.volume[p] * b.stress[p][i];
         means.strain[i] += b.volume[p] * b.strain[p][i];
       }
       body_volume[b.body] += b.volume[p];
     }
+    // The material's stored energy per unit volume (its own contract).
+    std::visit(
+        [&](const auto& model) {
+          using M = std::decay_t<decltype(model)>;
+          const auto& states = std::get<StateArray<M>>(b.states);
+          const typename M::State none{};
+          for (std::size_t p = 0; p < b.size(); ++p) {
+            row.strain_energy +=
+                b.volume[p] * model.stored_energy(states.empty() ? none : states[p], b.stress[p], b.strain[p]);
+          }
+        },
+        system.materials[b.material]);
   }
   for (std::size_t i = 0; i < body_count; ++i) {
     for (int k = 0; k < 6; ++k) {

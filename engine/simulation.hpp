@@ -1,95 +1,96 @@
-// A running simulation of one case: the Model, the step graph wired for the
-// case's scheme, and what the time loop and the writers read off it.
+// A running simulation: the DiscreteSystem, the step graph wired for a
+// scheme with each node's pass resolved once (tasks/stage_table.hpp), and
+// what the time loop and the writers read off it.
 #pragma once
 #include <algorithm>
+#include <cmath>
 #include <functional>
-#include <initializer_list>
 #include <sstream>
-#include <stdexcept>
 #include <string>
+#include <vector>
 
-#include "engine/build_model.hpp"
+#include "core/errors.hpp"
+#include "discretisation/build_system.hpp"
 #include "engine/diagnostics.hpp"
+#include "engine/snapshot.hpp"
 #include "engine/step_graph.hpp"
-#include "io/snapshot.hpp"
-#include "tasks/g2p.hpp"
-#include "tasks/grid_update.hpp"
-#include "tasks/p2g.hpp"
+#include "tasks/stage_table.hpp"
 
 namespace flowmpm {
-
-// The solution went wrong (a particle left the grid, a non-finite value).
-class SimulationError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 template <int D, class Shape>
 class Simulation {
  public:
   // `observer`, if given, is called as each stage starts (from any thread;
   // for the stages of one node, in their order, as the node starts).
-  explicit Simulation(const Case& c, std::function<void(Stage)> observer = {})
-      : fixed_dt_(c.dt_auto ? 0.0 : c.dt),
-        observer_(std::move(observer)),
-        graph_(wiring_of(c.scheme), [this](const StageGroup& stages) { run_node(stages); }) {
-    build_model(c, model_);
+  // `fixed_dt`: the time step when it stays fixed, 0 when the caller sets
+  // system().dt before every step.
+  Simulation(const SystemSpec& spec, const Wiring& wiring, double fixed_dt,
+             std::function<void(Stage)> observer = {})
+      : fixed_dt_(fixed_dt), observer_(std::move(observer)), graph_(wiring, [this](int node) { run_node(node); }) {
+    for (const StageGroup& group : wiring.nodes) passes_.push_back(stage_pass<D, Shape>(group));
+    build_system(spec, system_);
   }
 
   // One step through the flow graph (or serially, as the reference).
   void advance() { finish_step([this] { graph_.run(); }); }
   void advance_serial() { finish_step([this] { graph_.run_serial(); }); }
 
-  Model<D, Shape>& model() { return model_; }
-  const Model<D, Shape>& model() const { return model_; }
+  DiscreteSystem<D, Shape>& system() { return system_; }
+  const DiscreteSystem<D, Shape>& system() const { return system_; }
   const StepGraph& graph() const { return graph_; }
 
-  ParticleSnapshot snapshot() const {
+  // The fields named in `names` (of output_fields), in output_fields' order.
+  ParticleSnapshot snapshot(const std::vector<std::string>& names) const {
     ParticleSnapshot s;
-    snapshot_into(s);
+    snapshot_into(s, names);
     return s;
   }
 
   // Fills `s`, reusing its storage.
-  void snapshot_into(ParticleSnapshot& s) const {
-    s.position.clear();
-    s.velocity.clear();
-    s.stress.clear();
-    s.strain.clear();
-    s.volume.clear();
-    s.mass.clear();
-    s.material.clear();
-    s.step = model_.step;
-    s.time = model_.t;
-    s.count = model_.particle_count();
-    for (const auto& b : model_.batches) {
-      for (std::size_t p = 0; p < b.size(); ++p) {
-        for (int d = 0; d < 3; ++d) {
-          s.position.push_back(d < D ? b.x[p][d] : 0.0);
-          s.velocity.push_back(d < D ? b.v[p][d] : 0.0);
-        }
-        s.stress.insert(s.stress.end(), b.stress[p].begin(), b.stress[p].end());
-        s.strain.insert(s.strain.end(), b.strain[p].begin(), b.strain[p].end());
-        s.volume.push_back(b.volume[p]);
-        s.mass.push_back(b.mass[p]);
-        s.material.push_back(b.material);
+  void snapshot_into(ParticleSnapshot& s, const std::vector<std::string>& names) const {
+    s.step = system_.step;
+    s.time = system_.t;
+    s.count = system_.particle_count();
+    std::size_t k = 0;  // fields kept from an earlier snapshot keep their storage
+    for (const OutputField& f : output_fields) {
+      if (std::ranges::find(names, f.name) == names.end()) continue;
+      if (k == s.fields.size() || std::string_view(s.fields[k].field.name) != f.name) {
+        s.fields.resize(k);
+        s.fields.push_back({f, {}, {}});
       }
+      s.fields[k].real.clear();
+      s.fields[k].integer.clear();
+      ++k;
+    }
+    s.fields.resize(k);
+    auto field = [&](std::string_view name) -> SnapshotField* {
+      for (SnapshotField& f : s.fields)
+        if (name == f.field.name) return &f;
+      return nullptr;
+    };
+    for (const auto& b : system_.batches) {
+      // The stored columns, by name; then what is derived from the batch.
+      b.for_each_column([&](const char* name, const auto& column) {
+        if (SnapshotField* f = field(name)) append(f->real, column);
+      });
+      if (SnapshotField* f = field("material")) f->integer.insert(f->integer.end(), b.size(), b.material);
     }
   }
 
-  // Sets the model's largest particle speed (it is measured during each
+  // Sets the system's largest particle speed (it is measured during each
   // step; this measures it outside one, e.g. at the start).
   void measure_speed() {
-    model_.max_speed_sq = 0.0;
-    for (const auto& b : model_.batches)
-      for (const auto& v : b.v) model_.max_speed_sq = std::max(model_.max_speed_sq, v.squaredNorm());
+    system_.max_speed_sq = 0.0;
+    for (const auto& b : system_.batches)
+      for (const auto& v : b.v) system_.max_speed_sq = std::max(system_.max_speed_sq, v.squaredNorm());
   }
 
   // Where the fastest particle is and how fast it moves, for messages.
   std::string fastest_particle() const {
     double best = -1.0;
     Vec<D> x = Vec<D>::Zero();
-    for (const auto& b : model_.batches) {
+    for (const auto& b : system_.batches) {
       for (std::size_t p = 0; p < b.size(); ++p) {
         if (!(b.v[p].squaredNorm() <= best)) best = b.v[p].squaredNorm(), x = b.x[p];
       }
@@ -101,48 +102,50 @@ class Simulation {
   }
 
   // Energies and volume-weighted mean stress and strain per body.
-  TimeseriesRow diagnostics(std::size_t body_count) const { return flowmpm::diagnostics(model_, body_count); }
+  Diagnostics diagnostics(std::size_t body_count) const { return flowmpm::diagnostics(system_, body_count); }
 
  private:
-  void run_node(const StageGroup& stages) {
+  // Columns as flat doubles: vectors padded to 3 components, tensors as 6.
+  static void append(std::vector<double>& out, const std::vector<Vec<D>>& column) {
+    for (const Vec<D>& x : column)
+      for (int d = 0; d < 3; ++d) out.push_back(d < D ? x[d] : 0.0);
+  }
+  static void append(std::vector<double>& out, const std::vector<double>& column) {
+    out.insert(out.end(), column.begin(), column.end());
+  }
+  static void append(std::vector<double>& out, const std::vector<Voigt>& column) {
+    for (const Voigt& a : column) out.insert(out.end(), a.begin(), a.end());
+  }
+  // A model's internal variables are not an output field.
+  template <class State>
+  static void append(std::vector<double>&, const std::vector<State>&) {}
+
+  void run_node(int node) {
     if (observer_)
-      for (Stage s : stages) observer_(s);
-    using S = Stage;
-    auto is = [&](std::initializer_list<Stage> group) { return std::ranges::equal(stages, group); };
-    if (is({S::p2g_momentum, S::p2g_force})) return p2g_momentum_and_force(model_);
-    if (is({S::g2p_motion, S::g2p_stress})) return g2p_motion_and_stress(model_);
-    if (stages.size() != 1) throw std::logic_error("no single pass runs the stages " + group_name(stages));
-    switch (stages.front()) {
-      case Stage::p2g_momentum: p2g_momentum(model_); break;
-      case Stage::p2g_force: p2g_force(model_); break;
-      case Stage::grid_velocity: grid_velocity(model_); break;
-      case Stage::grid_integrate: grid_integrate(model_); break;
-      case Stage::g2p_motion: g2p_motion(model_); break;
-      case Stage::g2p_stress: g2p_stress(model_); break;
-      // MUSL: mass and momentum mapped again from the updated particles.
-      case Stage::remap: p2g_momentum(model_); break;
-    }
+      for (Stage s : graph_.wiring().nodes[node]) observer_(s);
+    passes_[node](system_);
   }
 
   template <class RunStep>
   void finish_step(RunStep&& run_step) {
-    if (model_.flags.resort_needed) sort_particles(model_);
+    if (system_.flags.resort_needed) sort_particles(system_);
     run_step();
-    if (model_.flags.failed) {
+    if (system_.flags.failed) {
       std::ostringstream s;
       s.precision(6);
-      s << "step " << model_.step + 1 << " (t = " << model_.t << " s to " << model_.t + model_.dt
-        << " s): " << model_.flags.problem;
+      s << "step " << system_.step + 1 << " (t = " << system_.t << " s to " << system_.t + system_.dt
+        << " s): " << system_.flags.problem;
       throw SimulationError(s.str());
     }
-    ++model_.step;
+    ++system_.step;
     // A fixed step keeps t an exact multiple of dt; an automatic one adds up.
-    model_.t = fixed_dt_ > 0.0 ? static_cast<double>(model_.step) * fixed_dt_ : model_.t + model_.dt;
+    system_.t = fixed_dt_ > 0.0 ? static_cast<double>(system_.step) * fixed_dt_ : system_.t + system_.dt;
   }
 
-  Model<D, Shape> model_;
-  double fixed_dt_;  // 0 with an automatic time step
+  DiscreteSystem<D, Shape> system_;
+  double fixed_dt_;
   std::function<void(Stage)> observer_;
+  std::vector<StagePass<D, Shape>> passes_;
   StepGraph graph_;
 };
 

@@ -1,58 +1,9 @@
 #include "engine/step_graph.hpp"
 
+#include <chrono>
 #include <stdexcept>
 
 namespace flowmpm {
-
-const char* stage_name(Stage s) {
-  switch (s) {
-    case Stage::p2g_momentum: return "p2g_momentum";
-    case Stage::p2g_force: return "p2g_force";
-    case Stage::grid_velocity: return "grid_velocity";
-    case Stage::grid_integrate: return "grid_integrate";
-    case Stage::g2p_motion: return "g2p_motion";
-    case Stage::g2p_stress: return "g2p_stress";
-    case Stage::remap: return "remap";
-  }
-  return "?";
-}
-
-std::string group_name(const StageGroup& group) {
-  std::string name;
-  for (Stage s : group) name += (name.empty() ? "" : " & ") + std::string(stage_name(s));
-  return name;
-}
-
-namespace {
-
-// A chain of nodes; `heads` all feed the first element of `chain`.
-Wiring chain(std::vector<StageGroup> heads, std::vector<StageGroup> chain) {
-  Wiring w;
-  w.nodes = heads;
-  const int first = static_cast<int>(w.nodes.size());
-  w.nodes.insert(w.nodes.end(), chain.begin(), chain.end());
-  for (int h = 0; h < first; ++h) w.edges.emplace_back(h, first);
-  for (int i = first; i + 1 < static_cast<int>(w.nodes.size()); ++i) w.edges.emplace_back(i, i + 1);
-  return w;
-}
-
-}  // namespace
-
-Wiring wiring_of(Scheme scheme) {
-  using S = Stage;
-  switch (scheme) {
-    case Scheme::usf:
-      return chain({{S::p2g_momentum}},
-                   {{S::grid_velocity}, {S::g2p_stress}, {S::p2g_force}, {S::grid_integrate}, {S::g2p_motion}});
-    case Scheme::usl:
-      return chain({{S::p2g_momentum, S::p2g_force}},
-                   {{S::grid_velocity}, {S::grid_integrate}, {S::g2p_motion, S::g2p_stress}});
-    case Scheme::musl:
-      return chain({{S::p2g_momentum, S::p2g_force}}, {{S::grid_velocity}, {S::grid_integrate}, {S::g2p_motion},
-                                                       {S::remap}, {S::grid_velocity}, {S::g2p_stress}});
-  }
-  throw std::logic_error("unknown scheme");
-}
 
 std::vector<int> Wiring::topological_order() const {
   const int n = static_cast<int>(nodes.size());
@@ -84,10 +35,11 @@ std::string Wiring::describe() const {
   return text;
 }
 
-StepGraph::StepGraph(Wiring wiring, StageFunction run_stages)
+StepGraph::StepGraph(Wiring wiring, NodeFunction run_node)
     : wiring_(std::move(wiring)),
-      run_stages_(std::move(run_stages)),
+      run_node_(std::move(run_node)),
       node_seconds_(wiring_.nodes.size(), 0.0),
+      serial_order_(wiring_.topological_order()),
       start_(graph_) {
   for (int node = 0; node < static_cast<int>(wiring_.nodes.size()); ++node) {
     nodes_.push_back(std::make_unique<tbb::flow::continue_node<tbb::flow::continue_msg>>(
@@ -107,7 +59,7 @@ StepGraph::StepGraph(Wiring wiring, StageFunction run_stages)
 
 void StepGraph::timed(int node) {
   const auto begin = std::chrono::steady_clock::now();
-  run_stages_(wiring_.nodes[node]);
+  run_node_(node);
   node_seconds_[node] += std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
 }
 
@@ -117,7 +69,7 @@ void StepGraph::run() {
 }
 
 void StepGraph::run_serial() {
-  for (int i : wiring_.topological_order()) timed(i);
+  for (int i : serial_order_) timed(i);
 }
 
 }  // namespace flowmpm

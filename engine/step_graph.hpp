@@ -1,12 +1,11 @@
-// One explicit step as a oneTBB flow graph (DESIGN.md). A scheme is only a
-// wiring of the same stage nodes: the Wiring lists node instances and the
-// edges between them; the graph is built once per run and triggered once per
-// step. Parallelism lives inside each stage (coarse graph, fine loops).
-// A node may run two particle stages in one pass over the particles ("&"),
-// where both read the same particle state: each particle's stencil is then
-// evaluated once instead of twice.
+// One explicit step as a oneTBB flow graph. A scheme (engine/schemes.hpp)
+// is only a wiring of the same stage nodes: the Wiring lists node instances
+// and the edges between them; the graph is built once per run and triggered
+// once per step. Parallelism lives inside each stage (coarse graph, fine
+// loops). A node may run two particle stages in one pass over the particles
+// ("&"), where both read the same particle state: each particle's stencil is
+// then evaluated once instead of twice.
 #pragma once
-#include <chrono>
 #include <functional>
 #include <memory>
 #include <string>
@@ -15,17 +14,9 @@
 
 #include <tbb/flow_graph.h>
 
-#include "io/case_file.hpp"
+#include "tasks/stage.hpp"
 
 namespace flowmpm {
-
-enum class Stage { p2g_momentum, p2g_force, grid_velocity, grid_integrate, g2p_motion, g2p_stress, remap };
-const char* stage_name(Stage s);
-
-// The stages one graph node runs, in order, in one pass.
-using StageGroup = std::vector<Stage>;
-// "p2g_momentum & p2g_force".
-std::string group_name(const StageGroup& group);
 
 struct Wiring {
   std::vector<StageGroup> nodes;            // node instances (a stage may appear twice)
@@ -37,18 +28,13 @@ struct Wiring {
   std::string describe() const;
 };
 
-// USF:  p2g_momentum -> grid_velocity -> g2p_stress -> p2g_force -> grid_integrate -> g2p_motion
-// USL:  p2g_momentum & p2g_force -> grid_velocity -> grid_integrate -> g2p_motion & g2p_stress
-// MUSL: p2g_momentum & p2g_force -> grid_velocity -> grid_integrate -> g2p_motion -> remap
-//       -> grid_velocity -> g2p_stress
-Wiring wiring_of(Scheme scheme);
-
 class StepGraph {
  public:
-  using StageFunction = std::function<void(const StageGroup&)>;
+  // Runs the work of node `node` of the wiring.
+  using NodeFunction = std::function<void(int node)>;
 
-  // Builds the graph once; `run_stages` does the work of a node.
-  StepGraph(Wiring wiring, StageFunction run_stages);
+  // Builds the graph once.
+  StepGraph(Wiring wiring, NodeFunction run_node);
 
   // Runs one step through the graph and waits for it.
   void run();
@@ -64,8 +50,9 @@ class StepGraph {
   void timed(int node);
 
   Wiring wiring_;
-  StageFunction run_stages_;
+  NodeFunction run_node_;
   std::vector<double> node_seconds_;
+  std::vector<int> serial_order_;
   tbb::flow::graph graph_;
   tbb::flow::broadcast_node<tbb::flow::continue_msg> start_;
   std::vector<std::unique_ptr<tbb::flow::continue_node<tbb::flow::continue_msg>>> nodes_;

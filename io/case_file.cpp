@@ -1,5 +1,6 @@
 #include "io/case_file.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -7,29 +8,18 @@
 #include <memory>
 #include <sstream>
 
+#include "core/number_text.hpp"
+#include "core/registry.hpp"
+#include "discretisation/shape_functions.hpp"
+#include "discretisation/stable_time_step.hpp"
+#include "engine/schemes.hpp"
+#include "engine/snapshot.hpp"
 #include "io/case_reader.hpp"
 
 namespace flowmpm {
-
-const char* scheme_name(Scheme s) {
-  switch (s) {
-    case Scheme::usf: return "USF";
-    case Scheme::usl: return "USL";
-    case Scheme::musl: return "MUSL";
-  }
-  return "?";
-}
-
 namespace {
 
 constexpr const char* axis_names[3] = {"x", "y", "z"};
-
-std::string fmt(double v) {
-  std::ostringstream s;
-  s.precision(6);
-  s << v;
-  return s.str();
-}
 
 // Applies one --set KEY=VALUE to the document. VALUE is TOML; a value that
 // does not parse as TOML is taken as a bare string (--set analysis.scheme=usf).
@@ -104,22 +94,22 @@ Vec3 per_axis(TableReader& t, std::string_view key, int dim) {
 }
 
 void read_analysis(TableReader t, Case& c) {
-  c.dimension = static_cast<int>(t.integer("dimension"));
-  t.require(c.dimension >= 1 && c.dimension <= 3, "dimension", "1, 2 or 3");
-  const std::string scheme = t.choice("scheme", {"usf", "usl", "musl"}, "usl");
-  c.scheme = scheme == "usf" ? Scheme::usf : scheme == "usl" ? Scheme::usl : Scheme::musl;
-  c.shape_function = t.choice("shape_function", {"linear", "gimp", "bspline2", "bspline3"}, "linear");
+  SystemSpec& s = c.system;
+  s.dimension = static_cast<int>(t.integer("dimension"));
+  t.require(s.dimension >= 1 && s.dimension <= 3, "dimension", "1, 2 or 3");
+  c.scheme = t.choice("scheme", scheme_names(), "usl");
+  s.shape_function = t.choice("shape_function", shape_function_names(), "linear");
   if (t.has("stress_state")) {
-    t.require(c.dimension == 2, "stress_state", "no stress_state outside 2D (3D is full, 1D uniaxial stress)");
-    c.plane_stress = t.choice("stress_state", {"plane_strain", "plane_stress"}) == "plane_stress";
+    t.require(s.dimension == 2, "stress_state", "no stress_state outside 2D (3D is full, 1D uniaxial stress)");
+    s.plane_stress = t.choice("stress_state", {"plane_strain", "plane_stress"}) == "plane_stress";
   }
   c.velocity_update = t.choice("velocity_update", {"flip", "pic", "blend"}, "flip");
   if (c.velocity_update == "blend") {
-    c.flip_fraction = t.number("flip_fraction");
-    t.require(c.flip_fraction >= 0.0 && c.flip_fraction <= 1.0, "flip_fraction",
+    s.flip_fraction = t.number("flip_fraction");
+    t.require(s.flip_fraction >= 0.0 && s.flip_fraction <= 1.0, "flip_fraction",
               "a FLIP fraction in [0, 1]");
   } else {
-    c.flip_fraction = c.velocity_update == "flip" ? 1.0 : 0.0;
+    s.flip_fraction = c.velocity_update == "flip" ? 1.0 : 0.0;
     if (t.has("flip_fraction")) t.fail("flip_fraction", "no flip_fraction unless velocity_update = \"blend\"");
   }
   if (t.has("dt") && t.node("dt")->is_string()) {
@@ -145,7 +135,7 @@ void read_analysis(TableReader t, Case& c) {
       t.require(end_time > 0.0, "end_time", "a positive end time in s");
       const double steps = std::round(end_time / c.dt);
       t.require(steps >= 1.0 && std::abs(steps * c.dt - end_time) <= 1e-9 * end_time, "end_time",
-                "a whole number of time steps (end_time / dt = " + fmt(end_time / c.dt) + ")");
+                "a whole number of time steps (end_time / dt = " + readable_text(end_time / c.dt) + ")");
       c.steps = static_cast<std::int64_t>(steps);
     }
     c.end_time = c.dt * static_cast<double>(c.steps);
@@ -154,11 +144,11 @@ void read_analysis(TableReader t, Case& c) {
   t.require(c.guard_speed_factor > 1.0, "guard_speed_factor", "a factor > 1 on the fastest wave speed");
   c.guard_every = t.integer_or("guard_every", 10);
   t.require(c.guard_every >= 0, "guard_every", "a number of steps >= 0 (0: keep no last good state)");
-  c.gravity = vector_of(t, "gravity", c.dimension);
+  s.gravity = vector_of(t, "gravity", s.dimension);
   t.reject_unknown_keys();
 }
 
-void read_grid(TableReader t, Case& c) {
+void read_grid(TableReader t, SystemSpec& c) {
   c.grid.origin = vector_of(t, "origin", c.dimension);
   c.grid.cell_size = per_axis(t, "cell_size", c.dimension);
   if (!t.has("cell_size")) t.fail("cell_size", "the cell size in m (a number, or one per axis)");
@@ -175,11 +165,11 @@ void read_grid(TableReader t, Case& c) {
   t.reject_unknown_keys();
 }
 
-double grid_max(const Case& c, int d) {
+double grid_max(const SystemSpec& c, int d) {
   return c.grid.origin[d] + c.grid.cell_size[d] * c.grid.cells[d];
 }
 
-void read_body(TableReader t, Case& c, std::size_t index) {
+void read_body(TableReader t, SystemSpec& c, std::size_t index) {
   BodySpec b;
   b.name = t.string_or("name", "body" + std::to_string(index));
   const std::string material = t.string("material");
@@ -198,9 +188,9 @@ void read_body(TableReader t, Case& c, std::size_t index) {
     t.require(b.box_min[d] < b.box_max[d], "max", "a corner above min along every axis");
     const double tol = 1e-9 * c.grid.cell_size[d];
     t.require(b.box_min[d] >= c.grid.origin[d] - tol, "min",
-              "a box inside the grid: " + std::string(axis_names[d]) + " >= " + fmt(c.grid.origin[d]));
+              "a box inside the grid: " + std::string(axis_names[d]) + " >= " + readable_text(c.grid.origin[d]));
     t.require(b.box_max[d] <= grid_max(c, d) + tol, "max",
-              "a box inside the grid: " + std::string(axis_names[d]) + " <= " + fmt(grid_max(c, d)));
+              "a box inside the grid: " + std::string(axis_names[d]) + " <= " + readable_text(grid_max(c, d)));
   }
   if (t.has("particles_per_cell") == t.has("spacing")) {
     t.fail_table("give exactly one of particles_per_cell (per axis) and spacing (m)");
@@ -231,13 +221,7 @@ void read_body(TableReader t, Case& c, std::size_t index) {
   c.bodies.push_back(b);
 }
 
-int axis_index(TableReader& t, std::string_view key, const std::string& name, int dim) {
-  for (int d = 0; d < dim; ++d)
-    if (name == axis_names[d]) return d;
-  t.fail(key, dim == 1 ? "the axis \"x\"" : dim == 2 ? "an axis, \"x\" or \"y\"" : "an axis, \"x\", \"y\" or \"z\"");
-}
-
-void read_node_set(TableReader t, Case& c, std::size_t index) {
+void read_node_set(TableReader t, SystemSpec& c, std::size_t index) {
   NodeSetSpec s;
   s.name = t.string_or("name", "node_set" + std::to_string(index));
   if (t.has("plane") == (t.has("min") || t.has("max"))) {
@@ -245,7 +229,7 @@ void read_node_set(TableReader t, Case& c, std::size_t index) {
   }
   if (t.has("plane")) {
     s.is_plane = true;
-    s.axis = axis_index(t, "plane", t.string("plane"), c.dimension);
+    s.axis = read_axis(t, "plane", c.dimension);
     s.at = t.number("at");
     const double h = c.grid.cell_size[s.axis];
     const double cell = (s.at - c.grid.origin[s.axis]) / h;
@@ -272,83 +256,20 @@ void read_node_set(TableReader t, Case& c, std::size_t index) {
 void read_output(TableReader t, Case& c) {
   c.output.directory = t.string_or("directory", "results/" + c.name);
   c.output.every = t.integer_or("every", 0);
-  t.require(c.output.every >= 0, "every", "a number of steps >= 0 (0: first and last step only)");
+  t.require(c.output.every >= 0, "every", "a number of steps >= 0 (0: about 20 over the run)");
   if (t.has("fields")) {
-    OutputFields f{false, false, false, false, false, false, false};
-    for (const std::string& name : t.strings("fields")) {
-      bool* flag = name == "position" ? &f.position
-                   : name == "velocity" ? &f.velocity
-                   : name == "stress"   ? &f.stress
-                   : name == "strain"   ? &f.strain
-                   : name == "volume"   ? &f.volume
-                   : name == "mass"     ? &f.mass
-                   : name == "material" ? &f.material
-                                        : nullptr;
-      if (!flag) {
-        t.fail("fields", "field names among \"position\", \"velocity\", \"stress\", \"strain\", "
-                         "\"volume\", \"mass\", \"material\"");
-      }
-      *flag = true;
+    const std::vector<std::string> known = output_field_names();
+    c.output.fields = t.strings("fields");
+    for (const std::string& name : c.output.fields) {
+      if (std::ranges::find(known, name) == known.end()) t.fail("fields", "field names among " + quoted_list(known));
     }
-    f.position = true;  // the XDMF geometry needs it
-    c.output.fields = f;
+    // The XDMF geometry needs the positions.
+    if (std::ranges::find(c.output.fields, "position") == c.output.fields.end()) c.output.fields.push_back("position");
   }
-  t.reject_unknown_keys();
-}
-
-void read_reference(TableReader t, Case& c) {
-  ReferenceSpec& r = c.reference;
-  r.type = t.choice("type", {"axial_vibration", "elastic_wave", "uniaxial_stress", "column_self_weight"});
-  auto positive = [&](std::string_view key, const char* what) {
-    const double v = t.number(key);
-    t.require(v > 0.0, key, what);
-    return v;
-  };
-  if (r.type == "axial_vibration" || r.type == "elastic_wave") {
-    t.require(c.dimension == 1, "type", "a 1D case (analysis.dimension = 1) for a bar reference");
-  }
-  if (r.type == "axial_vibration") {
-    r.origin = t.number("fixed_end");
-    r.length = positive("length", "the bar length in m");
-    r.velocity = positive("amplitude", "the velocity amplitude in m/s");
-    r.mode = static_cast<int>(t.integer_or("mode", 1));
-    t.require(r.mode >= 1, "mode", "a mode number >= 1");
-  } else if (r.type == "elastic_wave") {
-    r.origin = t.number("driven_end");
-    r.length = positive("length", "the bar length in m");
-    r.velocity = t.number("velocity");
-    t.require(r.velocity != 0.0, "velocity", "the velocity of the driven end in m/s, not 0");
-    r.probe = t.number("probe");
-    t.require(r.probe > r.origin && r.probe < r.origin + r.length, "probe", "a position inside the bar");
-  } else if (r.type == "uniaxial_stress") {
-    r.axis = axis_index(t, "axis", t.string("axis"), c.dimension);
-    r.length = positive("length", "the block length along the axis in m");
-    r.velocity = t.number("velocity");
-    t.require(r.velocity != 0.0, "velocity", "the loading velocity in m/s, not 0");
-  } else {
-    t.require(c.dimension >= 2, "type", "a 2D or 3D case for column_self_weight");
-    r.axis = axis_index(t, "axis", t.string("axis"), c.dimension);
-    r.origin = t.number("base");
-    r.length = positive("height", "the column height in m");
-    t.require(c.gravity[r.axis] < 0.0, "axis", "the axis along which gravity pulls (negative gravity component)");
-  }
-  r.samples = t.integer_or("samples", 0);
-  t.require(r.samples >= 0, "samples", "a number of error samples >= 0 (0: every step)");
   t.reject_unknown_keys();
 }
 
 }  // namespace
-
-StableStep stable_time_step(const Case& c) {
-  double h_min = std::numeric_limits<double>::infinity();
-  for (int d = 0; d < c.dimension; ++d) h_min = std::min(h_min, c.grid.cell_size[d]);
-  StableStep result{std::numeric_limits<double>::infinity(), ""};
-  for (const auto& m : c.materials) {
-    const double dt = h_min / wave_speed(m.model);
-    if (dt < result.dt) result = {dt, m.name};
-  }
-  return result;
-}
 
 Case read_case(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
   toml::table root;
@@ -376,38 +297,44 @@ Case read_case(const std::filesystem::path& file, const std::vector<std::string>
   Case c;
   c.file = file;
   TableReader t(root, "", file.string(), sources);
+  c.system.source = file.string();
   c.name = t.string_or("name", file.stem().string());
   read_analysis(t.table("analysis"), c);
-  read_grid(t.table("grid"), c);
+  read_grid(t.table("grid"), c.system);
 
   // Each key of [materials] names a material with its own table.
   TableReader materials = t.table("materials");
   for (auto&& [key, value] : *root.get("materials")->as_table()) {
     TableReader m = materials.table(key.str());
-    c.materials.push_back({std::string(key.str()), read_material(m)});
+    c.system.materials.push_back({std::string(key.str()), read_material(m)});
+    m.reject_unknown_keys();
   }
-  if (c.materials.empty()) materials.fail_table("define at least one material, e.g. [materials.steel]");
+  if (c.system.materials.empty()) materials.fail_table("define at least one material, e.g. [materials.steel]");
 
   const auto bodies = t.tables("bodies");
   if (bodies.empty()) t.fail("bodies", "at least one [[bodies]] table");
-  for (std::size_t i = 0; i < bodies.size(); ++i) read_body(bodies[i], c, i);
+  for (std::size_t i = 0; i < bodies.size(); ++i) read_body(bodies[i], c.system, i);
   const auto node_sets = t.tables("node_sets");
-  for (std::size_t i = 0; i < node_sets.size(); ++i) read_node_set(node_sets[i], c, i);
-  if (t.has("reference")) read_reference(t.table("reference"), c);
-  if (t.has("output")) {
-    read_output(t.table("output"), c);
-  } else {
-    c.output.directory = "results/" + c.name;
+  for (std::size_t i = 0; i < node_sets.size(); ++i) read_node_set(node_sets[i], c.system, i);
+  if (t.has("reference")) {
+    TableReader r = t.table("reference");
+    c.reference = Reference::read(r, {c.system, c.end_time});
+    r.reject_unknown_keys();
+    c.system.keep_initial_positions = true;
   }
+  c.output.directory = "results/" + c.name;
+  c.output.fields = output_field_names();
+  if (t.has("output")) read_output(t.table("output"), c);
   t.reject_unknown_keys();
 
   // The explicit step is stable only below the time a P wave takes to cross
   // the smallest cell (CFL number 1).
-  const StableStep stable = stable_time_step(c);
+  const StableStep stable = stable_time_step(c.system);
   if (c.dt_auto) c.dt = c.cfl * stable.dt;  // the first step's, particles at rest
+  c.system.dt = c.dt;
   if (c.dt > stable.dt) {
     TableReader analysis = t.table("analysis");
-    analysis.fail("dt", "a time step no larger than the stable limit h/c = " + fmt(stable.dt) +
+    analysis.fail("dt", "a time step no larger than the stable limit h/c = " + readable_text(stable.dt) +
                             " s (smallest cell over the P-wave speed of material \"" +
                             stable.material + "\")");
   }

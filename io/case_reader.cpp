@@ -1,5 +1,7 @@
 #include "io/case_reader.hpp"
 
+#include "core/registry.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -89,10 +91,6 @@ void TableReader::fail_table(std::string_view message) const {
                   std::string(message));
 }
 
-void TableReader::require(bool ok, std::string_view key, std::string_view expected) {
-  if (!ok) fail(key, expected);
-}
-
 const toml::node& TableReader::required(std::string_view key) {
   const toml::node* n = table_->get(key);
   if (!n) {
@@ -118,23 +116,10 @@ double TableReader::number(std::string_view key) {
   return value;
 }
 
-double TableReader::number_or(std::string_view key, double fallback) {
-  return has(key) ? number(key) : fallback;
-}
-
-std::optional<double> TableReader::optional_number(std::string_view key) {
-  if (!has(key)) return std::nullopt;
-  return number(key);
-}
-
 std::int64_t TableReader::integer(std::string_view key) {
   const toml::node& n = required(key);
   if (!n.is_integer()) fail_at(n, key, "an integer");
   return *n.value<std::int64_t>();
-}
-
-std::int64_t TableReader::integer_or(std::string_view key, std::int64_t fallback) {
-  return has(key) ? integer(key) : fallback;
 }
 
 std::string TableReader::string(std::string_view key) {
@@ -143,23 +128,16 @@ std::string TableReader::string(std::string_view key) {
   return std::string(*n.value<std::string>());
 }
 
-std::string TableReader::string_or(std::string_view key, std::string fallback) {
-  return has(key) ? string(key) : fallback;
-}
-
-std::string TableReader::choice(std::string_view key,
-                                std::initializer_list<std::string_view> allowed,
+std::string TableReader::choice(std::string_view key, const std::vector<std::string>& allowed,
                                 std::string_view fallback) {
-  std::string options;
-  for (auto a : allowed) options += (options.empty() ? "\"" : ", \"") + std::string(a) + "\"";
   if (!has(key) && !fallback.empty()) return std::string(fallback);
   const toml::node& n = required(key);
   if (n.is_string()) {
     const std::string value(*n.value<std::string>());
-    for (auto a : allowed)
+    for (const std::string& a : allowed)
       if (value == a) return value;
   }
-  fail_at(n, key, "one of " + options);
+  fail_at(n, key, "one of " + quoted_list(allowed));
 }
 
 std::vector<double> TableReader::numbers(std::string_view key, std::size_t count) {

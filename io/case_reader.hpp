@@ -1,36 +1,29 @@
-// Typed, validated reading of one TOML table of a case file. Every value is
-// read through a TableReader, which remembers which keys were used, so that
-// a key nobody read (a typo such as `shceme`) is an error, never silently
-// ignored. Every error names the file, the line, the dotted key and what was
-// expected.
+// Typed, validated reading of one TOML table of a case file: the
+// ParameterTable that the case reader and every registered extension (a
+// material, a reference, ...) read from. Every value is read through a
+// TableReader, which remembers which keys were used, so that a key nobody
+// read (a typo such as `shceme`) is an error, never silently ignored. Every
+// error names the file, the line, the dotted key and what was expected.
 #pragma once
 #include <cstdint>
-#include <initializer_list>
 #include <map>
 #include <memory>
-#include <optional>
 #include <set>
-#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include <toml++/toml.h>
 
-#include "engine/time_function.hpp"
+#include "core/errors.hpp"
+#include "core/parameter_table.hpp"
 
 namespace flowmpm {
-
-// A problem with the input; what() is the complete message for the user.
-class CaseError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 // "file:line" of a node (its own source when it came from --set).
 std::string source_of(const toml::node& node, const std::string& fallback_file);
 
-class TableReader {
+class TableReader : public ParameterTable {
  public:
   // `path` is the dotted name of the table ("analysis", "bodies[1]"), empty
   // for the document root.
@@ -39,40 +32,25 @@ class TableReader {
   TableReader(const toml::table& table, std::string path, std::string file,
               std::shared_ptr<const std::map<std::string, std::string>> overrides = {});
 
-  bool has(std::string_view key) const;
+  // ParameterTable
+  bool has(std::string_view key) const override;
+  double number(std::string_view key) override;
+  std::int64_t integer(std::string_view key) override;
+  std::string string(std::string_view key) override;
+  std::string choice(std::string_view key, const std::vector<std::string>& allowed,
+                     std::string_view fallback = {}) override;
+  std::vector<double> numbers(std::string_view key, std::size_t count) override;
+  TimeFunction time_function(std::string_view key, std::string_view what) override;
+  [[noreturn]] void fail(std::string_view key, std::string_view expected) const override;
+  [[noreturn]] void fail_table(std::string_view message) const override;
 
-  double number(std::string_view key);
-  double number_or(std::string_view key, double fallback);
-  std::optional<double> optional_number(std::string_view key);
-  std::int64_t integer(std::string_view key);
-  std::int64_t integer_or(std::string_view key, std::int64_t fallback);
-  std::string string(std::string_view key);
-  std::string string_or(std::string_view key, std::string fallback);
-  // One of `allowed`; `fallback` when absent (required when fallback is empty).
-  std::string choice(std::string_view key, std::initializer_list<std::string_view> allowed,
-                     std::string_view fallback = {});
-  // An array of exactly `count` numbers.
-  std::vector<double> numbers(std::string_view key, std::size_t count);
   std::vector<std::string> strings(std::string_view key);
-  // A value given as a number, or as a function of time: an array of
-  // [time (s), value] pairs with increasing times, piecewise linear between
-  // them and constant outside. `what` names the quantity and its unit for
-  // messages ("a temperature change in K").
-  TimeFunction time_function(std::string_view key, std::string_view what);
 
   TableReader table(std::string_view key);
   // The tables of an array of tables, e.g. [[bodies]]; empty when absent.
   std::vector<TableReader> tables(std::string_view key);
   // The raw node of a key (for values of several shapes); marks it used.
   const toml::node* node(std::string_view key);
-
-  // Checks a number read from `key`; fails with `expected` if not `ok`.
-  void require(bool ok, std::string_view key, std::string_view expected);
-
-  // Fails naming the key, its line and what was expected.
-  [[noreturn]] void fail(std::string_view key, std::string_view expected) const;
-  // Fails for the table as a whole.
-  [[noreturn]] void fail_table(std::string_view message) const;
 
   // Fails on the first key of this table that was never read, suggesting
   // the nearest key the table understands.

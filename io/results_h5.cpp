@@ -2,6 +2,7 @@
 
 #include <hdf5.h>
 
+#include <algorithm>
 #include <cinttypes>
 #include <cstdio>
 #include <cstring>
@@ -103,8 +104,7 @@ std::uintmax_t write_field(hid_t group, const std::string& group_name, std::size
 
 }  // namespace
 
-ResultsH5::ResultsH5(const std::filesystem::path& path, OutputFields fields)
-    : file_(H5I_INVALID_HID), fields_(fields), path_(path.string()) {
+ResultsH5::ResultsH5(const std::filesystem::path& path) : file_(H5I_INVALID_HID), path_(path.string()) {
   // Errors are reported by exceptions; HDF5 must not print its own stack.
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   Handle file(H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
@@ -125,21 +125,14 @@ std::string ResultsH5::group_name(std::int64_t step) {
 
 void ResultsH5::write(const ParticleSnapshot& snapshot) {
   const std::string name = group_name(snapshot.step);
-  const auto real = [](const char* field_name, const std::vector<double>& values,
-                       std::size_t components, const char* units) {
-    return Field{field_name,       values.data(), values.size(), components, H5T_IEEE_F64LE,
-                 H5T_NATIVE_DOUBLE, sizeof(double), units};
-  };
   std::vector<Field> fields;
-  if (fields_.position) fields.push_back(real("position", snapshot.position, 3, "m"));
-  if (fields_.velocity) fields.push_back(real("velocity", snapshot.velocity, 3, "m/s"));
-  if (fields_.stress) fields.push_back(real("stress", snapshot.stress, 6, "Pa"));
-  if (fields_.strain) fields.push_back(real("strain", snapshot.strain, 6, "-"));
-  if (fields_.volume) fields.push_back(real("volume", snapshot.volume, 1, "m^3"));
-  if (fields_.mass) fields.push_back(real("mass", snapshot.mass, 1, "kg"));
-  if (fields_.material)
-    fields.push_back(Field{"material", snapshot.material.data(), snapshot.material.size(), 1,
-                           H5T_STD_I32LE, H5T_NATIVE_INT32, sizeof(std::int32_t), nullptr});
+  for (const SnapshotField& f : snapshot.fields) {
+    const OutputField& o = f.field;
+    fields.push_back(o.integer ? Field{o.name, f.integer.data(), f.integer.size(), 1, H5T_STD_I32LE, H5T_NATIVE_INT32,
+                                       sizeof(std::int32_t), o.units}
+                               : Field{o.name, f.real.data(), f.real.size(), static_cast<std::size_t>(o.components),
+                                       H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, sizeof(double), o.units});
+  }
 
   // Checked before anything is written, so that a bad snapshot leaves no
   // partial group behind.
@@ -148,6 +141,11 @@ void ResultsH5::write(const ParticleSnapshot& snapshot) {
       throw std::invalid_argument("HDF5 file " + path_ + ": " + name + "/" + field.name + " has " +
                                   std::to_string(field.size) + " values, expected " +
                                   std::to_string(snapshot.count * field.components));
+  std::vector<OutputField> layout;
+  for (const SnapshotField& f : snapshot.fields) layout.push_back(f.field);
+  const auto same = [](const OutputField& a, const OutputField& b) { return std::string_view(a.name) == b.name; };
+  if (!written_.empty() && !std::ranges::equal(layout, fields_, same))
+    throw std::invalid_argument("HDF5 file " + path_ + ": " + name + " has other fields than the earlier steps");
 
   Handle group(H5Gcreate2(file_, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
   if (!group.valid()) fail(path_, "cannot create group " + name);
@@ -160,6 +158,7 @@ void ResultsH5::write(const ParticleSnapshot& snapshot) {
     bytes += write_field(group.get(), name, snapshot.count, field, path_);
   if (H5Fflush(file_, H5F_SCOPE_GLOBAL) < 0) fail(path_, "cannot flush after " + name);
   written_.push_back({snapshot.step, snapshot.time, snapshot.count});
+  fields_ = std::move(layout);
   bytes_ += bytes;
 }
 

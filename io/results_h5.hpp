@@ -1,6 +1,6 @@
 // results.h5: one group per output step, /steps/<step as 8 digits>, holding
-// the particle fields the case asks for, with "time" (s) and "step" as
-// attributes of the group. The file is flushed after every output step so
+// the particle fields of the snapshot (the case's output.fields), with
+// "time" (s) and "step" as attributes of the group. The file is flushed after every output step so
 // that an interrupted run keeps every step written before it.
 #pragma once
 #include <cstdint>
@@ -8,21 +8,22 @@
 #include <string>
 #include <vector>
 
-#include "io/snapshot.hpp"
+#include "engine/snapshot.hpp"
 
 namespace flowmpm {
 
 class ResultsH5 {
  public:
   // Creates (truncates) the file; throws std::runtime_error naming the path.
-  ResultsH5(const std::filesystem::path& path, OutputFields fields);
+  explicit ResultsH5(const std::filesystem::path& path);
   ~ResultsH5();
   ResultsH5(const ResultsH5&) = delete;
   ResultsH5& operator=(const ResultsH5&) = delete;
 
   // Writes one output step and flushes the file. Throws std::invalid_argument
-  // when an enabled field's size does not match the count (nothing is then
-  // written), std::runtime_error naming the file and dataset on HDF5 errors.
+  // when a field's size does not match the count or the fields differ from
+  // the earlier steps' (nothing is then written), std::runtime_error naming
+  // the file and dataset on HDF5 errors.
   void write(const ParticleSnapshot& snapshot);
 
   // Name of the group of a step inside the file, e.g. "/steps/00000010".
@@ -34,12 +35,13 @@ class ResultsH5 {
     std::size_t count;
   };
   const std::vector<WrittenStep>& written() const { return written_; }
-  const OutputFields& fields() const { return fields_; }
+  // The fields of every written step (those of the first).
+  const std::vector<OutputField>& fields() const { return fields_; }
   std::uintmax_t bytes_written() const { return bytes_; }
 
  private:
   long long file_;  // hid_t, kept opaque so that hdf5.h stays out of headers
-  OutputFields fields_;
+  std::vector<OutputField> fields_;
   std::vector<WrittenStep> written_;
   std::uintmax_t bytes_ = 0;
   std::string path_;  // for error messages

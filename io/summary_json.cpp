@@ -3,7 +3,8 @@
 #include <cmath>
 
 #include "io/atomic_file.hpp"
-#include "io/number_text.hpp"
+#include "core/number_text.hpp"
+#include "core/voigt.hpp"
 #include "io/quoted_string.hpp"
 
 namespace flowmpm {
@@ -15,10 +16,9 @@ std::string number(double value) { return std::isfinite(value) ? exact_text(valu
 
 // {"xx": ..., "yy": ..., "zz": ..., "yz": ..., "xz": ..., "xy": ...}
 std::string voigt(const std::array<double, 6>& values) {
-  static constexpr const char* kComponents[6] = {"xx", "yy", "zz", "yz", "xz", "xy"};
   std::string out = "{";
   for (std::size_t i = 0; i < 6; ++i)
-    out += std::string(i == 0 ? "" : ", ") + "\"" + kComponents[i] + "\": " + number(values[i]);
+    out += std::string(i == 0 ? "" : ", ") + "\"" + voigt_component_names[i] + "\": " + number(values[i]);
   return out + "}";
 }
 

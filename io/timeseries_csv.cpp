@@ -4,22 +4,12 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "io/number_text.hpp"
+#include "core/number_text.hpp"
+#include "core/voigt.hpp"
+#include "io/csv_text.hpp"
 
 namespace flowmpm {
 namespace {
-
-
-// Quotes a header field that holds a comma, quote or line break (RFC 4180).
-std::string csv_field(const std::string& text) {
-  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
-  std::string out = "\"";
-  for (const char c : text) {
-    if (c == '"') out += '"';
-    out += c;
-  }
-  return out + "\"";
-}
 
 // errno is cleared before each stream operation, so it names the cause only
 // when the operation set it.
@@ -29,8 +19,6 @@ std::string csv_field(const std::string& text) {
   if (error != 0) message += std::string(": ") + std::strerror(error);
   throw std::runtime_error(message);
 }
-
-constexpr const char* kComponents[6] = {"xx", "yy", "zz", "yz", "xz", "xy"};
 
 }  // namespace
 
@@ -43,7 +31,7 @@ TimeseriesCsv::TimeseriesCsv(const std::filesystem::path& path, std::vector<std:
   std::string header = "step,time,kinetic_energy,strain_energy";
   for (const std::string& name : body_names)
     for (const char* quantity : {".stress_", ".strain_"})
-      for (const char* component : kComponents)
+      for (const char* component : voigt_component_names)
         header += "," + csv_field(name + quantity + component);
   for (const std::string& name : error_names) header += "," + csv_field("error." + name);
   header += '\n';
@@ -52,13 +40,13 @@ TimeseriesCsv::TimeseriesCsv(const std::filesystem::path& path, std::vector<std:
     fail("cannot write", path_);
 }
 
-void TimeseriesCsv::write(const TimeseriesRow& row) {
+void TimeseriesCsv::write(const Diagnostics& row, const std::vector<double>& errors) {
   if (row.bodies.size() != body_count_)
     throw std::invalid_argument("timeseries row for " + path_ + " has " +
                                 std::to_string(row.bodies.size()) + " bodies, expected " +
                                 std::to_string(body_count_));
-  if (row.errors.size() != error_count_)
-    throw std::invalid_argument("timeseries row for " + path_ + " has " + std::to_string(row.errors.size()) +
+  if (errors.size() != error_count_)
+    throw std::invalid_argument("timeseries row for " + path_ + " has " + std::to_string(errors.size()) +
                                 " error norms, expected " + std::to_string(error_count_));
   std::string line = std::to_string(row.step);
   for (const double value : {row.time, row.kinetic_energy, row.strain_energy}) {
@@ -71,7 +59,7 @@ void TimeseriesCsv::write(const TimeseriesRow& row) {
         line += ',';
         append_exact(line, value);
       }
-  for (const double value : row.errors) {
+  for (const double value : errors) {
     line += ',';
     append_exact(line, value);
   }

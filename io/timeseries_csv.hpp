@@ -3,28 +3,14 @@
 // the error norms of a reference solution so far (columns error.<name>).
 // Each row is flushed as it is written, so the file is never cut mid-row.
 #pragma once
-#include <array>
-#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
 
+#include "engine/diagnostics.hpp"
+
 namespace flowmpm {
-
-struct BodyMeans {
-  std::array<double, 6> stress{};  // Pa, volume-weighted mean
-  std::array<double, 6> strain{};  // -, volume-weighted mean
-};
-
-struct TimeseriesRow {
-  std::int64_t step = 0;
-  double time = 0.0;            // s
-  double kinetic_energy = 0.0;  // J
-  double strain_energy = 0.0;   // J
-  std::vector<BodyMeans> bodies;  // in the order of the body names
-  std::vector<double> errors;     // in the order of the error names
-};
 
 class TimeseriesCsv {
  public:
@@ -32,7 +18,9 @@ class TimeseriesCsv {
   // std::runtime_error naming the path.
   TimeseriesCsv(const std::filesystem::path& path, std::vector<std::string> body_names,
                 std::vector<std::string> error_names = {});
-  void write(const TimeseriesRow& row);
+  // One row: the diagnostics of a step and the error norms so far, in the
+  // order of the error names.
+  void write(const Diagnostics& row, const std::vector<double>& errors = {});
 
  private:
   std::ofstream out_;

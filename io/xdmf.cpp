@@ -1,9 +1,11 @@
 #include "io/xdmf.hpp"
 
+#include <algorithm>
 #include <stdexcept>
+#include <string_view>
 
 #include "io/atomic_file.hpp"
-#include "io/number_text.hpp"
+#include "core/number_text.hpp"
 
 namespace flowmpm {
 namespace {
@@ -31,32 +33,21 @@ std::string data_item(const std::string& h5_path, const std::string& dimensions,
          "</DataItem>";
 }
 
-struct AttributeField {
-  bool enabled;
-  const char* name;
-  const char* attribute_type;
-  int components;
-  const char* number_type;
-  int precision;
-};
+// XDMF's attribute type for a field of `components` per particle. Tensors
+// are "Matrix": the six values as stored, in our Voigt order. XDMF's
+// "Tensor6" means xx xy xz yy yz zz, and ParaView's legacy reader builds a
+// wrong 3 x 3 tensor from our order (checked with pvpython).
+const char* attribute_type(int components) {
+  return components == 1 ? "Scalar" : components == 3 ? "Vector" : "Matrix";
+}
 
 }  // namespace
 
 std::string xdmf_document(const std::string& h5_name, const ResultsH5& results) {
-  const OutputFields& f = results.fields();
-  if (!f.position)
+  const std::vector<OutputField>& fields = results.fields();
+  if (!results.written().empty() &&
+      std::ranges::none_of(fields, [](const OutputField& f) { return std::string_view(f.name) == "position"; }))
     throw std::invalid_argument("XDMF needs the position field: it is the grid's geometry");
-  const AttributeField attributes[] = {
-      {f.velocity, "velocity", "Vector", 3, "Float", 8},
-      // "Matrix": the six values as stored, in our Voigt order. XDMF's
-      // "Tensor6" means xx xy xz yy yz zz, and ParaView's legacy reader
-      // builds a wrong 3 x 3 tensor from our order (checked with pvpython).
-      {f.stress, "stress", "Matrix", 6, "Float", 8},
-      {f.strain, "strain", "Matrix", 6, "Float", 8},
-      {f.volume, "volume", "Scalar", 1, "Float", 8},
-      {f.mass, "mass", "Scalar", 1, "Float", 8},
-      {f.material, "material", "Scalar", 1, "Int", 4},
-  };
   const std::string file = xml_escape(h5_name);
 
   std::string out =
@@ -79,13 +70,13 @@ std::string xdmf_document(const std::string& h5_name, const ResultsH5& results) 
     out += "          " + data_item(file + ":" + group + "/position", dimensions(3), "Float", 8) +
            "\n";
     out += "        </Geometry>\n";
-    for (const AttributeField& a : attributes) {
-      if (!a.enabled) continue;
-      out += "        <Attribute Name=\"" + std::string(a.name) + "\" AttributeType=\"" +
-             a.attribute_type + "\" Center=\"Node\">\n";
+    for (const OutputField& f : fields) {
+      if (std::string_view(f.name) == "position") continue;
+      out += "        <Attribute Name=\"" + std::string(f.name) + "\" AttributeType=\"" +
+             attribute_type(f.components) + "\" Center=\"Node\">\n";
       out += "          " +
-             data_item(file + ":" + group + "/" + a.name, dimensions(a.components), a.number_type,
-                       a.precision) +
+             data_item(file + ":" + group + "/" + f.name, dimensions(f.components), f.integer ? "Int" : "Float",
+                       f.integer ? 4 : 8) +
              "\n";
       out += "        </Attribute>\n";
     }

@@ -5,14 +5,14 @@
 #pragma once
 #include <cmath>
 
-#include "engine/types.hpp"
+#include "core/voigt.hpp"
 #include "materials/material_input.hpp"
 #include "materials/lame.hpp"
 #include "materials/stress_state.hpp"
 
 namespace flowmpm {
 
-class TableReader;
+class ParameterTable;
 
 struct LinearElastic {
   static constexpr const char* type_name = "linear_elastic";
@@ -34,7 +34,7 @@ struct LinearElastic {
         mu(lame_mu(p.youngs_modulus, p.poisson_ratio)) {}
 
   // Reads and validates [materials.NAME] (type = "linear_elastic").
-  static LinearElastic read(TableReader& table);
+  static LinearElastic read(ParameterTable& table);
 
   double density() const { return parameters.density; }
 
@@ -45,14 +45,14 @@ struct LinearElastic {
   // states the out-of-plane components of `deps` are set here (uniaxial
   // stress: d eps_yy = d eps_zz = -nu d eps_xx; plane stress:
   // d eps_zz = -lambda / (lambda + 2 mu) (d eps_xx + d eps_yy)).
-  template <StressState S>
+  template <StressState Kind>
   void update(State&, Voigt& sigma, Voigt& deps, const MaterialInput&) const {
-    if constexpr (S == StressState::uniaxial_stress) {
+    if constexpr (Kind == StressState::uniaxial_stress) {
       deps[1] = deps[2] = -parameters.poisson_ratio * deps[0];
       sigma[0] += parameters.youngs_modulus * deps[0];
       return;
     }
-    if constexpr (S == StressState::plane_stress) {
+    if constexpr (Kind == StressState::plane_stress) {
       // d sigma_zz = lambda (deps_xx + deps_yy + deps_zz) + 2 mu deps_zz = 0
       deps[2] = -lambda / (lambda + 2.0 * mu) * (deps[0] + deps[1]);
     }
@@ -60,6 +60,11 @@ struct LinearElastic {
     const double trace = deps[0] + deps[1] + deps[2];
     for (int i = 0; i < 3; ++i) sigma[i] += lambda * trace + 2.0 * mu * deps[i];
     for (int i = 3; i < 6; ++i) sigma[i] += 2.0 * mu * deps[i];
+  }
+
+  // Strain energy per unit volume, sigma : eps / 2 (all of the strain is elastic).
+  double stored_energy(const State&, const Voigt& sigma, const Voigt& eps) const {
+    return 0.5 * double_contraction(sigma, eps);
   }
 };
 

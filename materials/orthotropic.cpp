@@ -3,25 +3,18 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <sstream>
 #include <string>
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
 
-#include "io/case_reader.hpp"
+#include "core/number_text.hpp"
+#include "core/parameter_table.hpp"
 #include "materials/parameter_reading.hpp"
 
 namespace flowmpm {
 
 namespace {
-
-std::string fmt(double v) {
-  std::ostringstream s;
-  s.precision(6);
-  s << v;
-  return s.str();
-}
 
 // The largest eigenvalue of the acoustic tensor of an orthotropic stiffness
 // for the propagation direction (sin th cos ph, sin th sin ph, cos th):
@@ -69,7 +62,7 @@ double max_acoustic_eigenvalue(const Eigen::Matrix3d& C, double Gyz, double Gxz,
 }
 
 // nu_ij from whichever of (nu_ij, nu_ji) is given, by nu_ij / E_i = nu_ji / E_j.
-double poisson_pair(TableReader& t, const char* ij, const char* ji, double Ei, double Ej) {
+double poisson_pair(ParameterTable& t, const char* ij, const char* ji, double Ei, double Ej) {
   const std::string pair = std::string(ij) + " or " + ji;
   if (t.has(ij) && t.has(ji)) {
     t.fail(ji, std::string("only one of ") + ij + " and " + ji +
@@ -90,11 +83,11 @@ Eigen::Matrix3d Orthotropic::compliance(const Parameters& p) {
   return S;
 }
 
-Orthotropic::Orthotropic(const Parameters& p) : parameters(p), C_n(compliance(p).inverse()) {
+Orthotropic::Orthotropic(const Parameters& p) : parameters(p), S_n(compliance(p)), C_n(S_n.inverse()) {
   c_max = std::sqrt(max_acoustic_eigenvalue(C_n, p.Gyz, p.Gxz, p.Gxy) / p.density);
 }
 
-void Orthotropic::read_expansion(TableReader& t, Parameters& p, std::size_t count,
+void Orthotropic::read_expansion(ParameterTable& t, Parameters& p, std::size_t count,
                                  const std::array<int, 3>& source) {
   const std::string per_axis = count == 3 ? "one per material axis x, y, z" : "[axial, transverse]";
   struct Driver {
@@ -123,7 +116,7 @@ void Orthotropic::read_expansion(TableReader& t, Parameters& p, std::size_t coun
   }
 }
 
-Orthotropic Orthotropic::read(TableReader& t) {
+Orthotropic Orthotropic::read(ParameterTable& t) {
   Parameters p;
   p.density = t.number("density");
   t.require(p.density > 0.0, "density", "a positive density in kg/m^3");
@@ -152,14 +145,14 @@ Orthotropic Orthotropic::read(TableReader& t) {
   for (const auto& pr : pairs) {
     if (pr.product >= 1.0) {
       t.fail(t.has(pr.ij) ? pr.ij : pr.ji,
-             std::string("Poisson ratios with ") + pr.ij + " * " + pr.ji + " < 1 (here " + fmt(pr.product) +
+             std::string("Poisson ratios with ") + pr.ij + " * " + pr.ji + " < 1 (here " + readable_text(pr.product) +
                  "): otherwise the compliance is not positive definite");
     }
   }
   const double det = 1.0 - p.nuxy * nuyx - p.nuyz * nuzy - p.nuxz * nuzx - 2.0 * nuyx * nuzy * p.nuxz;
   if (det <= 0.0) {
     t.fail_table("the compliance is not positive definite: 1 - nuxy nuyx - nuyz nuzy - nuxz nuzx - "
-                 "2 nuyx nuzy nuxz = " + fmt(det) + " must be > 0; reduce the Poisson ratios");
+                 "2 nuyx nuzy nuxz = " + readable_text(det) + " must be > 0; reduce the Poisson ratios");
   }
   read_expansion(t, p, 3, {0, 1, 2});
   return Orthotropic(p);

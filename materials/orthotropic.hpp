@@ -33,15 +33,15 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-#include "engine/time_function.hpp"
-#include "engine/types.hpp"
+#include "core/time_function.hpp"
+#include "core/voigt.hpp"
 #include "materials/material_input.hpp"
 #include "materials/rotation.hpp"
 #include "materials/stress_state.hpp"
 
 namespace flowmpm {
 
-class TableReader;
+class ParameterTable;
 
 struct Orthotropic {
   static constexpr const char* type_name = "orthotropic";
@@ -64,17 +64,18 @@ struct Orthotropic {
   };
 
   Parameters parameters;
-  Eigen::Matrix3d C_n;   // normal block of the stiffness in material axes (Pa)
+  Eigen::Matrix3d S_n;   // normal block of the compliance in material axes (1/Pa)
+  Eigen::Matrix3d C_n;   // normal block of the stiffness, S_n^-1 (Pa)
   double c_max = 0.0;    // fastest wave speed (m/s), see wave_speed()
 
   explicit Orthotropic(const Parameters& p);
 
   // Reads and validates [materials.NAME] (type = "orthotropic").
-  static Orthotropic read(TableReader& table);
+  static Orthotropic read(ParameterTable& table);
   // Reads `alpha` with `temperature_change` and `beta` with `concentration`
   // (each pair both or neither): arrays of `count` values, of which
   // material axis i takes value source[i].
-  static void read_expansion(TableReader& t, Parameters& p, std::size_t count,
+  static void read_expansion(ParameterTable& t, Parameters& p, std::size_t count,
                              const std::array<int, 3>& source);
 
   // The normal block of the compliance S in material axes (1/Pa).
@@ -111,11 +112,11 @@ struct Orthotropic {
             2.0 * parameters.Gxy * e[5]};
   }
 
-  template <StressState S>
+  template <StressState Kind>
   void update(State& state, Voigt& sigma, Voigt& deps, const MaterialInput& in) const {
     const Eigen::Vector3d th = expansion_strain(in.t);
     Voigt& e = state.eps;
-    if constexpr (S == StressState::uniaxial_stress) {
+    if constexpr (Kind == StressState::uniaxial_stress) {
       e[0] += deps[0];
       const double e_mech = e[0] - th[0];
       deps[1] = th[1] - parameters.nuxy * e_mech - e[1];
@@ -129,7 +130,7 @@ struct Orthotropic {
       state.axes = (cayley(w) * state.axes).normalized();
       const Voigt de = to_material(R_mid, deps);
       for (int i = 0; i < 6; ++i) e[i] += de[i];
-      if constexpr (S == StressState::plane_stress) {
+      if constexpr (Kind == StressState::plane_stress) {
         // sigma_zz = C_31 (e_x - th_x) + C_32 (e_y - th_y) + C_33 (e_z - th_z) = 0
         const double e_z =
             th[2] - (C_n(2, 0) * (e[0] - th[0]) + C_n(2, 1) * (e[1] - th[1])) / C_n(2, 2);
@@ -137,8 +138,18 @@ struct Orthotropic {
         e[2] = e_z;
       }
       sigma = to_global(state.axes.toRotationMatrix(), material_stress(e, th));
-      if constexpr (S == StressState::plane_stress) sigma[2] = 0.0;  // round-off only
+      if constexpr (Kind == StressState::plane_stress) sigma[2] = 0.0;  // round-off only
     }
+  }
+
+  // Elastic strain energy per unit volume, sigma_m : S : sigma_m / 2 with
+  // sigma_m the stress in material axes: the expansion strains store none.
+  double stored_energy(const State& state, const Voigt& sigma, const Voigt&) const {
+    const Voigt s = to_material(state.axes.toRotationMatrix(), sigma);
+    const Eigen::Vector3d n(s[0], s[1], s[2]);
+    const Parameters& p = parameters;
+    return 0.5 * n.dot(S_n * n) + s[3] * s[3] / (2.0 * p.Gyz) + s[4] * s[4] / (2.0 * p.Gxz) +
+           s[5] * s[5] / (2.0 * p.Gxy);
   }
 };
 

@@ -1,10 +1,10 @@
 #include "materials/parameter_reading.hpp"
 
-#include "io/case_reader.hpp"
+#include "core/parameter_table.hpp"
 
 namespace flowmpm {
 
-std::tuple<double, double, double> read_isotropic_elasticity(TableReader& t) {
+std::tuple<double, double, double> read_isotropic_elasticity(ParameterTable& t) {
   const double density = t.number("density");
   t.require(density > 0.0, "density", "a positive density in kg/m^3");
   const double E = t.number("youngs_modulus");

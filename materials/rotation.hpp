@@ -17,7 +17,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-#include "engine/types.hpp"
+#include "core/voigt.hpp"
 
 namespace flowmpm {
 

@@ -2,12 +2,13 @@
 
 #include <sstream>
 
-#include "io/case_reader.hpp"
+#include "core/errors.hpp"
+#include "core/parameter_table.hpp"
 #include "materials/parameter_reading.hpp"
 
 namespace flowmpm {
 
-StrainSoftening StrainSoftening::read(TableReader& t) {
+StrainSoftening StrainSoftening::read(ParameterTable& t) {
   Parameters p;
   std::tie(p.density, p.youngs_modulus, p.poisson_ratio) = read_isotropic_elasticity(t);
   p.initiation_strain = t.number("initiation_strain");

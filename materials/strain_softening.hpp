@@ -32,7 +32,7 @@
 #include <cmath>
 #include <optional>
 
-#include "engine/types.hpp"
+#include "core/voigt.hpp"
 #include "materials/material_input.hpp"
 #include "materials/rotation.hpp"
 #include "materials/lame.hpp"
@@ -40,7 +40,7 @@
 
 namespace flowmpm {
 
-class TableReader;
+class ParameterTable;
 
 struct StrainSoftening {
   static constexpr const char* type_name = "strain_softening";
@@ -71,7 +71,7 @@ struct StrainSoftening {
         mu(lame_mu(p.youngs_modulus, p.poisson_ratio)) {}
 
   // Reads and validates [materials.NAME] (type = "strain_softening").
-  static StrainSoftening read(TableReader& table);
+  static StrainSoftening read(ParameterTable& table);
 
   // eps_f in a band of width init.cell_length; throws CaseError if the crack
   // band would snap back (eps_f <= eps_i).
@@ -89,12 +89,12 @@ struct StrainSoftening {
     return eps_f * (kappa - eps_i) / (kappa * (eps_f - eps_i));
   }
 
-  template <StressState S>
+  template <StressState Kind>
   void update(State& state, Voigt& sigma, Voigt& deps, const MaterialInput& in) const {
     const double E = parameters.youngs_modulus, nu = parameters.poisson_ratio;
     Voigt& e = state.eps;
     double eps_eq = 0.0;
-    if constexpr (S == StressState::uniaxial_stress) {
+    if constexpr (Kind == StressState::uniaxial_stress) {
       e[0] += deps[0];
       deps[1] = -nu * e[0] - e[1];
       deps[2] = -nu * e[0] - e[2];
@@ -102,7 +102,7 @@ struct StrainSoftening {
       eps_eq = std::abs(e[0]);
     } else {
       rotate_with_spin(e, in.dL);
-      if constexpr (S == StressState::plane_stress) {
+      if constexpr (Kind == StressState::plane_stress) {
         const double e_zz = -lambda / (lambda + 2.0 * mu) * (e[0] + deps[0] + e[1] + deps[1]);
         deps[2] = e_zz - e[2];
       }
@@ -117,14 +117,21 @@ struct StrainSoftening {
       state.kappa = eps_eq;
     }
     const double intact = 1.0 - damage(state.kappa, eps_f);
-    if constexpr (S == StressState::uniaxial_stress) {
+    if constexpr (Kind == StressState::uniaxial_stress) {
       sigma = {intact * E * e[0], 0.0, 0.0, 0.0, 0.0, 0.0};
     } else {
       const double tr = e[0] + e[1] + e[2];
       for (int i = 0; i < 3; ++i) sigma[i] = intact * (lambda * tr + 2.0 * mu * e[i]);
       for (int i = 3; i < 6; ++i) sigma[i] = intact * 2.0 * mu * e[i];
-      if constexpr (S == StressState::plane_stress) sigma[2] = 0.0;  // round-off only
+      if constexpr (Kind == StressState::plane_stress) sigma[2] = 0.0;  // round-off only
     }
+  }
+
+  // Recoverable (secant) energy per unit volume, (1 - omega) eps : C : eps / 2
+  // = sigma : eps / 2 with the state's total strain; what damage took is in
+  // State::dissipated.
+  double stored_energy(const State& state, const Voigt& sigma, const Voigt&) const {
+    return 0.5 * double_contraction(sigma, state.eps);
   }
 };
 

@@ -3,11 +3,11 @@
 #include <sstream>
 #include <string>
 
-#include "io/case_reader.hpp"
+#include "core/parameter_table.hpp"
 
 namespace flowmpm {
 
-TransverselyIsotropic TransverselyIsotropic::read(TableReader& t) {
+TransverselyIsotropic TransverselyIsotropic::read(ParameterTable& t) {
   Orthotropic::Parameters p;
   p.density = t.number("density");
   t.require(p.density > 0.0, "density", "a positive density in kg/m^3");

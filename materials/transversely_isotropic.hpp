@@ -25,7 +25,7 @@ struct TransverselyIsotropic : Orthotropic {
   explicit TransverselyIsotropic(const Orthotropic& o) : Orthotropic(o) {}
 
   // Reads and validates [materials.NAME] (type = "transversely_isotropic").
-  static TransverselyIsotropic read(TableReader& table);
+  static TransverselyIsotropic read(ParameterTable& table);
 
   State initial_state(const ParticleInit& init) const { return {Orthotropic::initial_state(init)}; }
 };

@@ -3,7 +3,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "io/case_reader.hpp"
+#include "core/parameter_table.hpp"
 #include "materials/parameter_reading.hpp"
 
 namespace flowmpm {
@@ -16,7 +16,7 @@ void VonMises::newton_failure(const char* what, double q_trial, double residual)
   throw std::runtime_error(s.str());
 }
 
-VonMises VonMises::read(TableReader& t) {
+VonMises VonMises::read(ParameterTable& t) {
   Parameters p;
   std::tie(p.density, p.youngs_modulus, p.poisson_ratio) = read_isotropic_elasticity(t);
   p.yield_stress = t.number("yield_stress");

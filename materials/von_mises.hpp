@@ -30,7 +30,7 @@
 #pragma once
 #include <cmath>
 
-#include "engine/types.hpp"
+#include "core/voigt.hpp"
 #include "materials/material_input.hpp"
 #include "materials/rotation.hpp"
 #include "materials/lame.hpp"
@@ -38,7 +38,7 @@
 
 namespace flowmpm {
 
-class TableReader;
+class ParameterTable;
 
 struct VonMises {
   static constexpr const char* type_name = "von_mises";
@@ -71,7 +71,7 @@ struct VonMises {
         K(lambda + 2.0 * mu / 3.0) {}
 
   // Reads and validates [materials.NAME] (type = "von_mises").
-  static VonMises read(TableReader& table);
+  static VonMises read(ParameterTable& table);
 
   double density() const { return parameters.density; }
   // P wave of the elastic material, sqrt((lambda + 2 mu) / rho) (m/s).
@@ -135,10 +135,10 @@ struct VonMises {
     newton_failure("the plane-stress return (Newton on Wilkins' factor M)", q_trial, std::abs(F));
   }
 
-  template <StressState S>
+  template <StressState Kind>
   void update(State& state, Voigt& sigma, Voigt& deps, const MaterialInput& in) const {
     const double E = parameters.youngs_modulus, nu = parameters.poisson_ratio;
-    if constexpr (S == StressState::uniaxial_stress) {
+    if constexpr (Kind == StressState::uniaxial_stress) {
       const double trial = sigma[0] + E * deps[0], q = std::abs(trial);
       const double sign = trial < 0.0 ? -1.0 : 1.0;
       const double dep = q > yield_stress(state.eps_p) ? plastic_increment(q, E, state.eps_p) : 0.0;
@@ -147,20 +147,20 @@ struct VonMises {
       state.eps_p += dep;
     } else {
       rotate_with_spin(sigma, in.dL);
-      if constexpr (S == StressState::plane_stress) {
+      if constexpr (Kind == StressState::plane_stress) {
         deps[2] = -lambda / (lambda + 2.0 * mu) * (deps[0] + deps[1]);
       }
       const double tr = deps[0] + deps[1] + deps[2];
       for (int i = 0; i < 3; ++i) sigma[i] += lambda * tr + 2.0 * mu * deps[i];
       for (int i = 3; i < 6; ++i) sigma[i] += 2.0 * mu * deps[i];
-      if constexpr (S == StressState::plane_stress) sigma[2] = 0.0;  // round-off only
+      if constexpr (Kind == StressState::plane_stress) sigma[2] = 0.0;  // round-off only
       const double p = (sigma[0] + sigma[1] + sigma[2]) / 3.0;
       Voigt s = sigma;
       for (int i = 0; i < 3; ++i) s[i] -= p;
       const double q2 = 1.5 * double_contraction(s, s), y = yield_stress(state.eps_p);
       if (q2 <= y * y) return;
       const double q = std::sqrt(q2);
-      if constexpr (S == StressState::plane_stress) {
+      if constexpr (Kind == StressState::plane_stress) {
         const PlaneStressReturn r = plane_stress_return(s, q, state.eps_p);
         // s' = s* + 2 G delta (-1/3, -1/3, 2/3), p' = p* + K delta, sigma = p' I + M s'.
         const double p1 = p + K * r.delta, g = 2.0 * mu * r.delta / 3.0;
@@ -178,6 +178,16 @@ struct VonMises {
         state.eps_p += dep;
       }
     }
+  }
+
+  // Elastic strain energy per unit volume, sigma : C^-1 : sigma / 2 =
+  // p^2 / (2 K) + s : s / (4 G) (any stress state: the stress holds the
+  // elastic strain; the plastic work is dissipated).
+  double stored_energy(const State&, const Voigt& sigma, const Voigt&) const {
+    const double p = (sigma[0] + sigma[1] + sigma[2]) / 3.0;
+    Voigt s = sigma;
+    for (int i = 0; i < 3; ++i) s[i] -= p;
+    return p * p / (2.0 * K) + double_contraction(s, s) / (4.0 * mu);
   }
 };
 

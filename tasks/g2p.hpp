@@ -12,8 +12,7 @@
 #include <atomic>
 #include <cmath>
 
-#include "engine/particle_sort.hpp"
-#include "engine/stencil.hpp"
+#include "discretisation/stencil.hpp"
 #include "tasks/parallel_blocks.hpp"
 
 namespace flowmpm {
@@ -21,24 +20,24 @@ namespace flowmpm {
 namespace detail {
 
 // The material update of particle p for its velocity gradient L (g2p_stress).
-template <int D, class Shape, StressState S, class MaterialModel>
-[[gnu::always_inline]] inline void update_particle_stress(Model<D, Shape>& model, ParticleBatch<D>& b, std::size_t p,
+template <int D, class Shape, StressState Kind, class MaterialModel>
+[[gnu::always_inline]] inline void update_particle_stress(DiscreteSystem<D, Shape>& system, ParticleBatch<D>& b, std::size_t p,
                                                          const double (&L)[D][D], const MaterialModel& material,
                                                          typename MaterialModel::State& state) {
-  const double dt = model.dt;
+  const double dt = system.dt;
   Voigt deps{};
   for (int i = 0; i < D; ++i)
     for (int j = i; j < D; ++j) deps[voigt_slot(i, j)] = 0.5 * (L[i][j] + L[j][i]) * dt;
   MaterialInput input;
-  input.t = model.t + dt;
+  input.t = system.t + dt;
   input.dt = dt;
   input.length = b.particle_length;
   for (int i = 0; i < D; ++i)
     for (int j = 0; j < D; ++j) input.dL(i, j) = L[i][j] * dt;
-  material.template update<S>(state, b.stress[p], deps, input);
+  material.template update<Kind>(state, b.stress[p], deps, input);
   if (!std::isfinite(b.stress[p][0] + b.stress[p][1] + b.stress[p][2] + b.stress[p][3] + b.stress[p][4] +
                      b.stress[p][5])) {
-    model.flags.fail("a particle at " + position_text<D>(b.x[p]) + ": its stress is not finite");
+    system.flags.fail("a particle at " + position_text<D>(b.x[p]) + ": its stress is not finite");
   }
   for (int i = 0; i < 6; ++i) b.strain[p][i] += deps[i];
   b.volume[p] *= 1.0 + deps[0] + deps[1] + deps[2];
@@ -48,37 +47,37 @@ template <int D, class Shape, StressState S, class MaterialModel>
 // one dispatch on the material and the stress state per call, none per
 // particle.
 template <int D, class Shape, class F>
-void with_stress_update(Model<D, Shape>& model, ParticleBatch<D>& b, F&& f) {
+void with_stress_update(DiscreteSystem<D, Shape>& system, ParticleBatch<D>& b, F&& f) {
   std::visit(
       [&](const auto& material) {
         using M = std::decay_t<decltype(material)>;
         auto& states = std::get<StateArray<M>>(b.states);
-        auto for_state = [&]<StressState S>() {
+        auto for_state = [&]<StressState Kind>() {
           typename M::State no_state{};
           f([&](std::size_t p, const double(&L)[D][D]) {
-            update_particle_stress<D, Shape, S>(model, b, p, L, material, states.empty() ? no_state : states[p]);
+            update_particle_stress<D, Shape, Kind>(system, b, p, L, material, states.empty() ? no_state : states[p]);
           });
         };
         if constexpr (D == 3) {
           for_state.template operator()<StressState::three_d>();
         } else if constexpr (D == 1) {
           for_state.template operator()<StressState::uniaxial_stress>();
-        } else if (model.stress_state == StressState::plane_stress) {
+        } else if (system.stress_state == StressState::plane_stress) {
           for_state.template operator()<StressState::plane_stress>();
         } else {
           for_state.template operator()<StressState::plane_strain>();
         }
       },
-      model.materials[b.material]);
+      system.materials[b.material]);
 }
 
 // One pass over the particles: g2p_motion, g2p_stress, or both (USL), from
 // one stencil per particle at its position at the start of the pass.
 template <int D, class Shape, bool Motion, bool Stress>
-void g2p(Model<D, Shape>& model) {
+void g2p(DiscreteSystem<D, Shape>& system) {
   using Layout = BlockLayout<D, Shape>;
-  const auto& grid = model.grid;
-  const double a = model.flip_fraction, dt = model.dt;
+  const auto& grid = system.grid;
+  const double a = system.flip_fraction, dt = system.dt;
   // Largest particle speed of the step, for the time step and the guard:
   // per block, then combined (max is exact, so any order gives the same).
   std::atomic<double> max_speed_sq{0.0};
@@ -92,10 +91,10 @@ void g2p(Model<D, Shape>& model) {
     velocity[d] = grid.velocity[d].data();
     velocity_change[d] = grid.velocity_change[d].data();
   }
-  gather_by_block(model, [&](ParticleBatch<D>& b, std::uint32_t first, std::uint32_t last, std::uint32_t block) {
+  gather_by_block(system, [&](ParticleBatch<D>& b, std::uint32_t first, std::uint32_t last, std::uint32_t block) {
     // The cells the block's particles may reach before a re-sort is due:
     // fewer than drift_limit cells outside the block, per axis.
-    const Index<D> bc = model.blocks.block_coords(block);
+    const Index<D> bc = system.blocks.block_coords(block);
     Index<D> stay_lo, stay_hi;
     for (int d = 0; d < D; ++d) {
       stay_lo[d] = bc[d] * Layout::block_cells - Layout::drift_limit + 1;
@@ -150,7 +149,7 @@ void g2p(Model<D, Shape>& model) {
           }
           const Vec<D> v_new = a * (b.v[p] + dv) + (1.0 - a) * v_grid;
           if (!inside || !one_cell || !v_new.allFinite()) {
-            model.flags.fail("a particle at " + position_text<D>(b.x[p]) + " would move to " +
+            system.flags.fail("a particle at " + position_text<D>(b.x[p]) + " would move to " +
                              position_text<D>(x_new) +
                              (!v_new.allFinite() ? ", its velocity not finite"
                               : !inside          ? ", outside the grid"
@@ -160,12 +159,12 @@ void g2p(Model<D, Shape>& model) {
           b.v[p] = v_new;
           b.x[p] = x_new;
           block_max_sq = std::max(block_max_sq, v_new.squaredNorm());
-          if (!stays) model.flags.resort_needed.store(true, std::memory_order_relaxed);
+          if (!stays) system.flags.resort_needed.store(true, std::memory_order_relaxed);
         }
       }
     };
     if constexpr (Stress) {
-      with_stress_update(model, b, particles);
+      with_stress_update(system, b, particles);
     } else {
       particles([](std::size_t, const double(&)[D][D]) {});
     }
@@ -173,25 +172,25 @@ void g2p(Model<D, Shape>& model) {
     while (block_max_sq > seen && !max_speed_sq.compare_exchange_weak(seen, block_max_sq)) {
     }
   });
-  if constexpr (Motion) model.max_speed_sq = max_speed_sq.load();
+  if constexpr (Motion) system.max_speed_sq = max_speed_sq.load();
 }
 
 }  // namespace detail
 
 template <int D, class Shape>
-void g2p_motion(Model<D, Shape>& model) {
-  detail::g2p<D, Shape, true, false>(model);
+void g2p_motion(DiscreteSystem<D, Shape>& system) {
+  detail::g2p<D, Shape, true, false>(system);
 }
 
 template <int D, class Shape>
-void g2p_stress(Model<D, Shape>& model) {
-  detail::g2p<D, Shape, false, true>(model);
+void g2p_stress(DiscreteSystem<D, Shape>& system) {
+  detail::g2p<D, Shape, false, true>(system);
 }
 
 // USL: both stages in one pass, N and dN at the start-of-step positions.
 template <int D, class Shape>
-void g2p_motion_and_stress(Model<D, Shape>& model) {
-  detail::g2p<D, Shape, true, true>(model);
+void g2p_motion_and_stress(DiscreteSystem<D, Shape>& system) {
+  detail::g2p<D, Shape, true, true>(system);
 }
 
 }  // namespace flowmpm

@@ -9,9 +9,9 @@
 namespace flowmpm {
 
 template <int D, class Shape>
-void apply_velocity_constraints(Model<D, Shape>& model, double time) {
-  auto& grid = model.grid;
-  for (const NodeConstraint& c : model.constraints) {
+void apply_velocity_constraints(DiscreteSystem<D, Shape>& system, double time) {
+  auto& grid = system.grid;
+  for (const NodeConstraint& c : system.constraints) {
     const double value = c.velocity(time);
     for (std::size_t n : c.nodes) {
       grid.velocity[c.axis][n] = value;
@@ -19,7 +19,7 @@ void apply_velocity_constraints(Model<D, Shape>& model, double time) {
     }
   }
   // Ghost nodes take their mirror's velocity, reflected about the plane's.
-  for (const MirrorPlane& plane : model.mirror_planes) {
+  for (const MirrorPlane& plane : system.mirror_planes) {
     for (int d = 0; d < D; ++d) {
       const bool constrained = plane.velocity[d].has_value();
       const double V = constrained ? (*plane.velocity[d])(time) : 0.0;
@@ -35,9 +35,9 @@ void apply_velocity_constraints(Model<D, Shape>& model, double time) {
 // Hands what the ghost nodes received to their mirror nodes (MirrorPlane):
 // `field` is momentum or force, `mass` too for the former.
 template <int D, class Shape>
-void fold_mirror_planes(Model<D, Shape>& model, typename Grid<D>::VectorField& field, bool with_mass) {
-  auto& grid = model.grid;
-  for (const MirrorPlane& plane : model.mirror_planes) {
+void fold_mirror_planes(DiscreteSystem<D, Shape>& system, typename Grid<D>::VectorField& field, bool with_mass) {
+  auto& grid = system.grid;
+  for (const MirrorPlane& plane : system.mirror_planes) {
     for (auto [ghost, mirror] : plane.pairs) {
       if (with_mass) grid.mass[mirror] += grid.mass[ghost];
       for (int d = 0; d < D; ++d) field[d][mirror] += (plane.velocity[d] ? -1.0 : 1.0) * field[d][ghost];
@@ -46,22 +46,22 @@ void fold_mirror_planes(Model<D, Shape>& model, typename Grid<D>::VectorField& f
 }
 
 template <int D, class Shape>
-void grid_velocity(Model<D, Shape>& model) {
-  auto& grid = model.grid;
-  const double threshold = model.mass_threshold;
-  fold_mirror_planes(model, grid.momentum, true);
+void grid_velocity(DiscreteSystem<D, Shape>& system) {
+  auto& grid = system.grid;
+  const double threshold = system.mass_threshold;
+  fold_mirror_planes(system, grid.momentum, true);
   for_each_active_node(grid, [&](std::size_t n, const Index<D>&) {
     const bool massive = grid.mass[n] > threshold;
     for (int d = 0; d < D; ++d) grid.velocity[d][n] = massive ? grid.momentum[d][n] / grid.mass[n] : 0.0;
   });
-  apply_velocity_constraints(model, model.t);
+  apply_velocity_constraints(system, system.t);
 }
 
 template <int D, class Shape>
-void grid_integrate(Model<D, Shape>& model) {
-  auto& grid = model.grid;
-  const double threshold = model.mass_threshold, dt = model.dt;
-  fold_mirror_planes(model, grid.force, false);
+void grid_integrate(DiscreteSystem<D, Shape>& system) {
+  auto& grid = system.grid;
+  const double threshold = system.mass_threshold, dt = system.dt;
+  fold_mirror_planes(system, grid.force, false);
   for_each_active_node(grid, [&](std::size_t n, const Index<D>&) {
     const bool massive = grid.mass[n] > threshold;
     for (int d = 0; d < D; ++d) {
@@ -74,7 +74,7 @@ void grid_integrate(Model<D, Shape>& model) {
       }
     }
   });
-  apply_velocity_constraints(model, model.t + dt);
+  apply_velocity_constraints(system, system.t + dt);
   for_each_active_node(grid, [&](std::size_t n, const Index<D>&) {
     for (int d = 0; d < D; ++d) grid.velocity_change[d][n] = grid.velocity[d][n] - grid.velocity_change[d][n];
   });

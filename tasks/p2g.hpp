@@ -5,7 +5,7 @@
 // In 1D and 2D only the in-plane block of sigma enters the force.
 // USL and MUSL map both from the same particle state, in one pass.
 #pragma once
-#include "engine/stencil.hpp"
+#include "discretisation/stencil.hpp"
 #include "tasks/parallel_blocks.hpp"
 
 namespace flowmpm {
@@ -16,8 +16,8 @@ namespace detail {
 // stencil per particle. Each node sums its particles in the same order
 // whichever is mapped, so the results do not depend on the grouping.
 template <int D, class Shape, bool Momentum, bool Force>
-void p2g(Model<D, Shape>& model) {
-  auto& grid = model.grid;
+void p2g(DiscreteSystem<D, Shape>& system) {
+  auto& grid = system.grid;
   for_each_active_node(grid, [&](std::size_t n, const Index<D>&) {
     if constexpr (Momentum) grid.mass[n] = 0.0;
     for (int d = 0; d < D; ++d) {
@@ -25,7 +25,7 @@ void p2g(Model<D, Shape>& model) {
       if constexpr (Force) grid.force[d][n] = 0.0;
     }
   });
-  const Vec<D> g = model.gravity;
+  const Vec<D> g = system.gravity;
   double* mass = grid.mass.data();
   double* momentum[D];
   double* force[D];
@@ -33,7 +33,7 @@ void p2g(Model<D, Shape>& model) {
     momentum[d] = grid.momentum[d].data();
     force[d] = grid.force[d].data();
   }
-  scatter_by_colour(model, [&](ParticleBatch<D>& b, std::uint32_t first, std::uint32_t last, std::uint32_t) {
+  scatter_by_colour(system, [&](ParticleBatch<D>& b, std::uint32_t first, std::uint32_t last, std::uint32_t) {
     for (std::uint32_t p = first; p < last; ++p) {
       const Stencil<D, Shape, Force> s(grid, b.x[p], b.half_width);
       const double m = b.mass[p];
@@ -67,18 +67,18 @@ void p2g(Model<D, Shape>& model) {
 }  // namespace detail
 
 template <int D, class Shape>
-void p2g_momentum(Model<D, Shape>& model) {
-  detail::p2g<D, Shape, true, false>(model);
+void p2g_momentum(DiscreteSystem<D, Shape>& system) {
+  detail::p2g<D, Shape, true, false>(system);
 }
 
 template <int D, class Shape>
-void p2g_force(Model<D, Shape>& model) {
-  detail::p2g<D, Shape, false, true>(model);
+void p2g_force(DiscreteSystem<D, Shape>& system) {
+  detail::p2g<D, Shape, false, true>(system);
 }
 
 template <int D, class Shape>
-void p2g_momentum_and_force(Model<D, Shape>& model) {
-  detail::p2g<D, Shape, true, true>(model);
+void p2g_momentum_and_force(DiscreteSystem<D, Shape>& system) {
+  detail::p2g<D, Shape, true, true>(system);
 }
 
 }  // namespace flowmpm

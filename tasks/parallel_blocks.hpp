@@ -7,8 +7,8 @@
 
 #include <algorithm>
 
-#include "engine/model.hpp"
-#include "engine/stencil.hpp"
+#include "discretisation/discrete_system.hpp"
+#include "discretisation/stencil.hpp"
 
 namespace flowmpm {
 
@@ -23,18 +23,18 @@ constexpr std::size_t min_pairs_per_task = 2048;
 // Blocks per task for the particle loops: enough for min_pairs_per_task at
 // the mean occupancy.
 template <int D, class Shape>
-std::size_t blocks_per_task(const Model<D, Shape>& model) {
+std::size_t blocks_per_task(const DiscreteSystem<D, Shape>& system) {
   constexpr std::size_t nodes_per_particle = Stencil<D, Shape, false>::size;
-  const std::size_t blocks = std::max<std::size_t>(1, model.blocks.occupied.size());
-  const std::size_t pairs_per_block = std::max<std::size_t>(1, model.particle_count() * nodes_per_particle / blocks);
+  const std::size_t blocks = std::max<std::size_t>(1, system.blocks.occupied.size());
+  const std::size_t pairs_per_block = std::max<std::size_t>(1, system.particle_count() * nodes_per_particle / blocks);
   return std::max<std::size_t>(1, min_pairs_per_task / pairs_per_block);
 }
 
 // f(batch, first, last, block): the particles [first, last) of `batch`
 // in `block`, batches in their fixed order.
 template <int D, class Shape, class F>
-void for_each_block_segment(Model<D, Shape>& model, std::uint32_t block, F&& f) {
-  for (auto& batch : model.batches) {
+void for_each_block_segment(DiscreteSystem<D, Shape>& system, std::uint32_t block, F&& f) {
+  for (auto& batch : system.batches) {
     const std::uint32_t first = batch.block_begin[block], last = batch.block_begin[block + 1];
     if (first < last) f(batch, first, last, block);
   }
@@ -42,25 +42,25 @@ void for_each_block_segment(Model<D, Shape>& model, std::uint32_t block, F&& f) 
 
 // Scatter loop: colours in order, the blocks of one colour in parallel.
 template <int D, class Shape, class F>
-void scatter_by_colour(Model<D, Shape>& model, F&& f) {
-  const std::size_t grain = blocks_per_task(model);
-  for (const auto& blocks : model.blocks.occupied_by_colour) {
+void scatter_by_colour(DiscreteSystem<D, Shape>& system, F&& f) {
+  const std::size_t grain = blocks_per_task(system);
+  for (const auto& blocks : system.blocks.occupied_by_colour) {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, blocks.size(), grain),
                       [&](const tbb::blocked_range<std::size_t>& r) {
                         for (std::size_t i = r.begin(); i != r.end(); ++i)
-                          for_each_block_segment(model, blocks[i], f);
+                          for_each_block_segment(system, blocks[i], f);
                       });
   }
 }
 
 // Gather loop: every occupied block in parallel.
 template <int D, class Shape, class F>
-void gather_by_block(Model<D, Shape>& model, F&& f) {
-  const auto& blocks = model.blocks.occupied;
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, blocks.size(), blocks_per_task(model)),
+void gather_by_block(DiscreteSystem<D, Shape>& system, F&& f) {
+  const auto& blocks = system.blocks.occupied;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, blocks.size(), blocks_per_task(system)),
                     [&](const tbb::blocked_range<std::size_t>& r) {
                       for (std::size_t i = r.begin(); i != r.end(); ++i)
-                        for_each_block_segment(model, blocks[i], f);
+                        for_each_block_segment(system, blocks[i], f);
                     });
 }
 

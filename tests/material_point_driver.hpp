@@ -1,5 +1,5 @@
 // A material point driven the way the engine drives it (tasks/g2p.hpp):
-// update<S> once per increment with deps = sym(dL), dL = L dt, t at the end
+// update<Kind> once per increment with deps = sym(dL), dL = L dt, t at the end
 // of the increment; for the material tests. Mixed control: increments whose
 // free components are solved, by Newton with a finite-difference Jacobian on
 // copies of the state, so that their stresses stay zero.
@@ -22,7 +22,9 @@ namespace flowmpm::testing {
 inline Material material_from_text(const std::string& text) {
   const toml::table table = toml::parse(std::string_view(text), std::string_view("material.toml"));
   TableReader reader(table, "materials.m", "material.toml");
-  return read_material(reader);
+  Material m = read_material(reader);
+  reader.reject_unknown_keys();
+  return m;
 }
 
 // The message with which reading `text` as a material fails ("no error"
@@ -36,7 +38,7 @@ inline std::string material_error(const std::string& text) {
   return "no error";
 }
 
-template <class Model, StressState S>
+template <class Model, StressState Kind>
 struct MaterialPoint {
   const Model& model;
   typename Model::State state;
@@ -103,7 +105,7 @@ struct MaterialPoint {
     in.dt = t_end - t;
     in.dL = dL;
     in.length = length;
-    model.template update<S>(s, sig, deps, in);
+    model.template update<Kind>(s, sig, deps, in);
   }
 };
 

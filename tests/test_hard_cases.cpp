@@ -10,7 +10,7 @@
 #include <fstream>
 #include <iterator>
 
-#include "engine/run_case.hpp"
+#include "app/run_case.hpp"
 #include "engine/simulation.hpp"
 #include "test_helpers.hpp"
 

@@ -5,7 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "engine/run_case.hpp"
+#include "app/run_case.hpp"
+#include "engine/schemes.hpp"
+#include "engine/simulation.hpp"
 #include "io/case_file.hpp"
 
 namespace flowmpm::testing {
@@ -29,6 +31,12 @@ inline RunSummary run(const Case& c, bool write = false) {
   RunOptions options;
   options.write_results = write;
   return run_case(c, options);
+}
+
+// The simulation of a case, as run_case builds it, to step by hand.
+template <int D, class Shape>
+Simulation<D, Shape> simulation(const Case& c, std::function<void(Stage)> observer = {}) {
+  return Simulation<D, Shape>(c.system, scheme_named(c.scheme).wiring, c.dt_auto ? 0.0 : c.dt, std::move(observer));
 }
 
 }  // namespace flowmpm::testing

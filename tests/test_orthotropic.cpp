@@ -29,7 +29,7 @@
 #include <numbers>
 #include <random>
 
-#include "engine/shape_linear.hpp"
+#include "discretisation/shape_linear.hpp"
 #include "engine/simulation.hpp"
 #include "material_point_driver.hpp"
 #include "test_helpers.hpp"
@@ -399,9 +399,9 @@ namespace {
 // Mean stress and strain of the first body at the end of the case.
 template <int D>
 BodyMeans run(const Case& c) {
-  Simulation<D, LinearShape> sim(c);
+  auto sim = testing::simulation<D, LinearShape>(c);
   for (std::int64_t s = 0; s < c.steps; ++s) sim.advance();
-  return sim.diagnostics(c.bodies.size()).bodies[0];
+  return sim.diagnostics(c.system.bodies.size()).bodies[0];
 }
 
 }  // namespace
@@ -467,8 +467,8 @@ TEST_CASE("cylindrical material axes: each particle's x axis points away from th
                                          "[[bodies]]\nmaterial = \"wood\"\nmin = [0.2, 0.2]\nmax = [0.8, 0.8]\n"
                                          "particles_per_cell = 2\nmaterial_axes = [10.0]\n"
                                          "material_axes_center = [0.5, 0.5]\n");
-  Simulation<2, LinearShape> sim(c);
-  const auto& batch = sim.model().batches.at(0);
+  auto sim = testing::simulation<2, LinearShape>(c);
+  const auto& batch = sim.system().batches.at(0);
   const auto& states = std::get<StateArray<Orthotropic>>(batch.states);
   REQUIRE(states.size() == batch.size());
   for (std::size_t p = 0; p < batch.size(); ++p) {

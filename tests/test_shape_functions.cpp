@@ -11,10 +11,10 @@
 #include <map>
 #include <random>
 
-#include "engine/shape_bspline.hpp"
-#include "engine/shape_gimp.hpp"
-#include "engine/shape_linear.hpp"
-#include "engine/stencil.hpp"
+#include "discretisation/shape_bspline.hpp"
+#include "discretisation/shape_gimp.hpp"
+#include "discretisation/shape_linear.hpp"
+#include "discretisation/stencil.hpp"
 
 using namespace flowmpm;
 

@@ -13,12 +13,12 @@
 #include <algorithm>
 #include <mutex>
 
-#include "engine/shape_linear.hpp"
+#include "discretisation/shape_linear.hpp"
 #include "engine/simulation.hpp"
 #include "test_helpers.hpp"
 
 using namespace flowmpm;
-using S = Stage;
+
 
 namespace {
 
@@ -26,7 +26,7 @@ std::vector<Stage> recorded_order(const std::string& scheme, bool serial) {
   const Case c = read_case(testing::config("uniaxial_stress/case1_usl.toml"), {"analysis.scheme=" + scheme});
   std::mutex mutex;
   std::vector<Stage> order;
-  Simulation<3, LinearShape> sim(c, [&](Stage s) {
+  auto sim = testing::simulation<3, LinearShape>(c, [&](Stage s) {
     std::lock_guard lock(mutex);
     order.push_back(s);
   });
@@ -48,29 +48,29 @@ void check_order(std::vector<Stage> got, std::vector<Stage> expected, int parall
 }  // namespace
 
 TEST_CASE("USF wiring") {
-  const std::vector<Stage> usf{S::p2g_momentum, S::grid_velocity,  S::g2p_stress,
-                               S::p2g_force,    S::grid_integrate, S::g2p_motion};
+  const std::vector<Stage> usf{Stage::p2g_momentum, Stage::grid_velocity,  Stage::g2p_stress,
+                               Stage::p2g_force,    Stage::grid_integrate, Stage::g2p_motion};
   check_order(recorded_order("usf", false), usf, 1);
   check_order(recorded_order("usf", true), usf, 1);
-  CHECK(wiring_of(Scheme::usf).describe() ==
+  CHECK(scheme_named("usf").wiring.describe() ==
         "p2g_momentum -> grid_velocity -> g2p_stress -> p2g_force -> grid_integrate -> g2p_motion");
 }
 
 TEST_CASE("USL wiring") {
-  const std::vector<Stage> usl{S::p2g_momentum,   S::p2g_force,  S::grid_velocity,
-                               S::grid_integrate, S::g2p_motion, S::g2p_stress};
+  const std::vector<Stage> usl{Stage::p2g_momentum,   Stage::p2g_force,  Stage::grid_velocity,
+                               Stage::grid_integrate, Stage::g2p_motion, Stage::g2p_stress};
   check_order(recorded_order("usl", false), usl, 2);
   check_order(recorded_order("usl", true), usl, 2);
-  CHECK(wiring_of(Scheme::usl).describe() ==
+  CHECK(scheme_named("usl").wiring.describe() ==
         "p2g_momentum & p2g_force -> grid_velocity -> grid_integrate -> g2p_motion & g2p_stress");
 }
 
 TEST_CASE("MUSL wiring") {
-  const std::vector<Stage> musl{S::p2g_momentum, S::p2g_force, S::grid_velocity, S::grid_integrate,
-                                S::g2p_motion,   S::remap,     S::grid_velocity, S::g2p_stress};
+  const std::vector<Stage> musl{Stage::p2g_momentum, Stage::p2g_force, Stage::grid_velocity, Stage::grid_integrate,
+                                Stage::g2p_motion,   Stage::remap,     Stage::grid_velocity, Stage::g2p_stress};
   check_order(recorded_order("musl", false), musl, 2);
   check_order(recorded_order("musl", true), musl, 2);
-  CHECK(wiring_of(Scheme::musl).describe() ==
+  CHECK(scheme_named("musl").wiring.describe() ==
         "p2g_momentum & p2g_force -> grid_velocity -> grid_integrate -> g2p_motion -> remap -> "
         "grid_velocity -> g2p_stress");
 }
@@ -78,9 +78,9 @@ TEST_CASE("MUSL wiring") {
 TEST_CASE("the graph runs each stage node once per step, for many steps") {
   const Case c = read_case(testing::config("uniaxial_stress/case2_musl.toml"));
   std::atomic<int> calls{0};
-  Simulation<3, LinearShape> sim(c, [&](Stage) { ++calls; });
+  auto sim = testing::simulation<3, LinearShape>(c, [&](Stage) { ++calls; });
   for (int i = 0; i < 50; ++i) sim.advance();
   CHECK(calls == 50 * 8);
-  CHECK(sim.model().step == 50);
-  CHECK(sim.model().t == doctest::Approx(0.05).epsilon(1e-12));
+  CHECK(sim.system().step == 50);
+  CHECK(sim.system().t == doctest::Approx(0.05).epsilon(1e-12));
 }

@@ -23,7 +23,7 @@
 #include <numbers>
 #include <sstream>
 
-#include "engine/shape_linear.hpp"
+#include "discretisation/shape_linear.hpp"
 #include "engine/simulation.hpp"
 #include "material_point_driver.hpp"
 #include "test_helpers.hpp"
@@ -245,9 +245,9 @@ struct BarResult {
 };
 
 BarResult run_bar(const Case& c) {
-  Simulation<2, LinearShape> sim(c);
+  auto sim = testing::simulation<2, LinearShape>(c);
   for (std::int64_t s = 0; s < c.steps; ++s) sim.advance();
-  const auto& model = sim.model();
+  const auto& model = sim.system();
   BarResult r;
   r.h = model.grid.h[1];
   for (const auto& b : model.batches) {

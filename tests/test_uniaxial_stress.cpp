@@ -22,7 +22,7 @@
 
 #include <cmath>
 
-#include "engine/run_case.hpp"
+#include "app/run_case.hpp"
 #include "test_helpers.hpp"
 
 using namespace flowmpm;

@@ -19,7 +19,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "engine/run_case.hpp"
+#include "app/run_case.hpp"
 #include "test_helpers.hpp"
 
 using namespace flowmpm;

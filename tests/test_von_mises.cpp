@@ -27,7 +27,7 @@
 #include <limits>
 #include <numbers>
 
-#include "engine/shape_linear.hpp"
+#include "discretisation/shape_linear.hpp"
 #include "engine/simulation.hpp"
 #include "material_point_driver.hpp"
 #include "test_helpers.hpp"
@@ -266,12 +266,12 @@ TEST_CASE("whole case: a bar pulled in uniaxial stress yields at sigma_0 and har
   // particles, held at x = 0 and pulled at x = 0.1 m to twice the yield
   // strain with a smooth velocity ramp.
   const Case c = read_case(testing::config("materials/von_mises_bar.toml"));
-  Simulation<1, LinearShape> sim(c);
+  auto sim = testing::simulation<1, LinearShape>(c);
   double yield_strain = -1.0, yield_stress = 0.0;
   for (std::int64_t s = 0; s < c.steps; ++s) {
     sim.advance();
     if (yield_strain >= 0.0) continue;
-    const auto& states = std::get<StateArray<VonMises>>(sim.model().batches[0].states);
+    const auto& states = std::get<StateArray<VonMises>>(sim.system().batches[0].states);
     for (const auto& st : states) {
       if (st.eps_p > 0.0) {
         const BodyMeans b = sim.diagnostics(1).bodies[0];
@@ -300,12 +300,12 @@ TEST_CASE("whole case: a plate pulled in plane stress yields at sigma_0, in plan
     CAPTURE(state);
     const Case c = read_case(testing::config("materials/von_mises_plate.toml"),
                              {"analysis.stress_state=\"" + state + "\""});
-    Simulation<2, LinearShape> sim(c);
+    auto sim = testing::simulation<2, LinearShape>(c);
     double yield_stress = -1.0;
     for (std::int64_t s = 0; s < c.steps; ++s) {
       sim.advance();
       if (yield_stress >= 0.0) continue;
-      for (const auto& st : std::get<StateArray<VonMises>>(sim.model().batches[0].states)) {
+      for (const auto& st : std::get<StateArray<VonMises>>(sim.system().batches[0].states)) {
         if (st.eps_p > 0.0) {
           yield_stress = sim.diagnostics(1).bodies[0].stress[1];
           break;

@@ -1,0 +1,259 @@
+#include "app/run_case.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include <spdlog/spdlog.h>
+
+#include "core/errors.hpp"
+#include "core/number_text.hpp"
+#include "discretisation/shape_functions.hpp"
+#include "discretisation/stable_time_step.hpp"
+#include "engine/schemes.hpp"
+#include "engine/simulation.hpp"
+#include "io/results_h5.hpp"
+#include "io/timeseries_csv.hpp"
+#include "io/xdmf.hpp"
+
+namespace flowmpm {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+std::string stored_fields(int dimension) {
+  const std::string vec = dimension == 1 ? "scalar" : std::to_string(dimension) + "-vector";
+  return "x, v (" + vec + "), mass, volume, stress, strain (6 Voigt)";
+}
+
+template <int D, class Shape>
+void log_system(const Case& c, const DiscreteSystem<D, Shape>& system, const Scheme& scheme) {
+  spdlog::info("model: {}D ({}), scheme {} [{}], shape function {}, velocity update {}{}", D,
+               stress_state_name(system.stress_state), scheme.label, scheme.wiring.describe(), Shape::name,
+               c.velocity_update,
+               c.velocity_update == "blend" ? " (FLIP fraction " + std::to_string(system.flip_fraction) + ")" : "");
+  std::string cells;
+  for (int d = 0; d < D; ++d) cells += (d ? " x " : "") + std::to_string(system.grid.cells[d]);
+  spdlog::info("grid: {} cells, {} nodes, {} blocks of {}^{} cells ({} occupied)", cells,
+               system.grid.node_count(), system.blocks.block_count, BlockLayout<D, Shape>::block_cells, D,
+               system.blocks.occupied.size());
+  for (const auto& b : system.batches) {
+    const auto& m = c.system.materials[b.material];
+    spdlog::info("body '{}': {} particles, material '{}' ({}, density {} kg/m^3, wave speed {:.4g} m/s)",
+                 c.system.bodies[b.body].name, b.size(), m.name, type_name(m.model), density(m.model),
+                 wave_speed(m.model));
+  }
+  spdlog::info("particle fields stored: {}", stored_fields(D));
+  for (const auto& k : system.constraints) {
+    spdlog::info("node set '{}': {} nodes, velocity prescribed along {}", k.name, k.nodes.size(),
+                 "xyz"[k.axis]);
+  }
+  if (system.gravity.norm() > 0.0) spdlog::info("gravity: {} m/s^2", system.gravity.norm());
+  const StableStep stable = stable_time_step(c.system);
+  if (c.dt_auto) {
+    spdlog::info("time: dt automatic, CFL {} (first step {:.4g} s; the stable limit at rest is {:.4g} s), to t = {} s",
+                 c.cfl, c.dt, stable.dt, c.end_time);
+  } else {
+    spdlog::info("time: dt = {} s ({:.3g} of the stable limit {:.4g} s), {} steps to t = {} s", c.dt,
+                 c.dt / stable.dt, stable.dt, c.steps, c.end_time);
+  }
+}
+
+template <int D, class Shape>
+RunSummary run(const Case& c, const RunOptions& options) {
+  const auto setup_start = Clock::now();
+  const Scheme& scheme = scheme_named(c.scheme);
+  Simulation<D, Shape> sim(c.system, scheme.wiring, c.dt_auto ? 0.0 : c.dt);
+  auto& system = sim.system();
+  log_system(c, system, scheme);
+
+  RunSummary summary;
+  summary.case_name = c.name;
+  summary.case_file = c.file.string();
+  summary.scheme = scheme.label;
+  summary.shape_function = Shape::name;
+  summary.velocity_update = c.velocity_update;
+  summary.dimension = D;
+  summary.threads = options.threads;
+  summary.particles = system.particle_count();
+  summary.nodes = system.grid.node_count();
+  summary.dt = c.dt_auto ? 0.0 : c.dt;
+  summary.end_time = c.end_time;
+  summary.setup_seconds = options.setup_seconds + seconds_since(setup_start);
+
+  // Without output.every: about 20 output steps over the run.
+  const std::int64_t planned_steps =
+      c.dt_auto ? static_cast<std::int64_t>(std::ceil(c.end_time / c.dt)) : c.steps;
+  const std::int64_t every = c.output.every > 0 ? c.output.every : std::max<std::int64_t>(1, planned_steps / 20);
+  std::optional<Reference> reference = c.reference;
+  std::int64_t sample_every = 1;
+  auto sample_reference = [&] {
+    const auto t0 = Clock::now();
+    reference->sample(system);
+    summary.reference_seconds += seconds_since(t0);
+  };
+  if (reference) {
+    reference->initialise(system);
+    if (reference->samples() > 0) sample_every = std::max<std::int64_t>(1, planned_steps / reference->samples());
+    sample_reference();
+    spdlog::info("reference: {} (errors sampled every {} step{})", reference->type(), sample_every,
+                 sample_every == 1 ? "" : "s");
+  }
+
+  const auto& dir = c.output.directory;
+  const std::size_t body_count = c.system.bodies.size();
+  std::vector<std::string> body_names;
+  for (const auto& b : c.system.bodies) body_names.push_back(b.name);
+  std::optional<ResultsH5> h5;
+  std::optional<TimeseriesCsv> csv;
+  if (options.write_results) {
+    std::error_code error;
+    std::filesystem::create_directories(dir, error);
+    if (error) {
+      throw CaseError("output directory " + dir.string() + ": cannot create it (" + error.message() +
+                      "); set output.directory or --output");
+    }
+    h5.emplace(dir / "results.h5");
+    std::vector<std::string> error_names;
+    if (reference)
+      for (const auto& [name, value] : reference->errors()) error_names.push_back(name);
+    csv.emplace(dir / "timeseries.csv", body_names, error_names);
+  }
+  auto write_output = [&] {
+    const auto t0 = Clock::now();
+    if (options.write_results) {
+      h5->write(sim.snapshot(c.output.fields));
+      write_xdmf(dir / "results.xdmf", "results.h5", *h5);
+      // The error norms so far: over the particles and the samples up to now.
+      std::vector<double> errors;
+      if (reference)
+        for (const auto& [name, value] : reference->errors()) errors.push_back(value);
+      csv->write(sim.diagnostics(body_count), errors);
+    }
+    summary.output_seconds += seconds_since(t0);
+  };
+  auto finish = [&](const std::string& status) {
+    summary.status = status;
+    summary.steps = system.step;
+    summary.particle_steps_per_second =
+        summary.step_loop_seconds > 0.0
+            ? static_cast<double>(summary.particles) * static_cast<double>(system.step) / summary.step_loop_seconds
+            : 0.0;
+    const Diagnostics final_state = sim.diagnostics(body_count);
+    summary.bodies.clear();
+    for (std::size_t i = 0; i < body_count; ++i) {
+      summary.bodies.push_back(
+          {c.system.bodies[i].name, final_state.bodies[i].stress, final_state.bodies[i].strain});
+    }
+    if (reference) summary.errors = reference->errors();
+    summary.energy_final = final_state.kinetic_energy + final_state.strain_energy;
+    if (options.write_results) write_summary(dir / "summary.json", summary);
+  };
+
+  // Blow-up guard: the state is kept every guard_every steps so that the
+  // last one that passed can be written when the run breaks down.
+  ParticleSnapshot last_good;
+  std::int64_t last_written = -1;
+  const StableStep stable = stable_time_step(c.system);
+  const double c_max = system.grid.h.minCoeff() / stable.dt;  // fastest wave speed
+  const double speed_limit = c.guard_speed_factor * c_max;
+  auto check_guard = [&] {
+    if (system.max_speed_sq <= speed_limit * speed_limit) return;
+    throw SimulationError(fmt::format("blow-up at step {} (t = {:.6g} s): {}, more than {:g} times the fastest "
+                                      "wave speed, {:.4g} m/s (analysis.guard_speed_factor)",
+                                      system.step, system.t, sim.fastest_particle(), c.guard_speed_factor, c_max));
+  };
+  auto write_last_good = [&] {
+    if (!options.write_results) return std::string();
+    if (last_good.count == 0 || last_good.step <= last_written) {
+      return fmt::format("; the last good state written is step {} in results.h5", last_written);
+    }
+    h5->write(last_good);
+    write_xdmf(dir / "results.xdmf", "results.h5", *h5);
+    return fmt::format("; the last good state (step {}, t = {:.6g} s) is the last step in results.h5",
+                       last_good.step, last_good.time);
+  };
+  auto done = [&] { return c.dt_auto ? system.t >= c.end_time * (1.0 - 1e-12) : system.step >= c.steps; };
+  auto next_dt = [&] {
+    if (!c.dt_auto) return c.dt;
+    // CFL condition with the particles' own speed added to the wave speed.
+    const double dt = c.cfl * system.grid.h.minCoeff() / (c_max + std::sqrt(system.max_speed_sq));
+    return std::min(dt, c.end_time - system.t);
+  };
+  const Diagnostics initial = sim.diagnostics(body_count);
+  summary.energy_initial = initial.kinetic_energy + initial.strain_energy;
+  sim.measure_speed();
+
+  write_output();
+  last_written = system.step;
+  auto last_progress = Clock::now();
+  const auto loop_start = Clock::now();
+  try {
+    while (!done()) {
+      if (options.interrupt && options.interrupt->load()) {
+        if (system.step != last_written) write_output();
+        finish("interrupted at step " + std::to_string(system.step));
+        throw SimulationError("interrupted at step " + std::to_string(system.step) + " (t = " +
+                              std::to_string(system.t) + " s); results up to this step are written");
+      }
+      if (c.guard_every > 0 && system.step % c.guard_every == 0) sim.snapshot_into(last_good, c.output.fields);
+      system.dt = next_dt();
+      const auto t0 = Clock::now();
+      try {
+        sim.advance();
+      } catch (const SimulationError&) {
+        throw;
+      } catch (const std::exception& e) {
+        // A stage threw (e.g. a material's return mapping did not converge).
+        throw SimulationError(fmt::format("step {} (t = {:.6g} s): {}", system.step + 1, system.t, e.what()));
+      }
+      summary.step_loop_seconds += seconds_since(t0);
+      check_guard();
+      const bool last = done();
+      if (reference && (system.step % sample_every == 0 || last)) sample_reference();
+      if (system.step % every == 0 || last) {
+        write_output();
+        last_written = system.step;
+      }
+      if (seconds_since(last_progress) >= options.progress_seconds) {
+        last_progress = Clock::now();
+        const double rate = static_cast<double>(summary.particles) * static_cast<double>(system.step) /
+                            summary.step_loop_seconds;
+        const double fraction = system.t / c.end_time;
+        const double eta = seconds_since(loop_start) * (1.0 - fraction) / fraction;
+        spdlog::info("step {} ({:.0f}%), t = {:.6g} s, dt = {:.3g} s, {:.3g} particle-steps/s, ETA {:.0f} s",
+                     system.step, 100.0 * fraction, system.t, system.dt, rate, eta);
+      }
+    }
+  } catch (const SimulationError& e) {
+    if (summary.status == "completed") {
+      const std::string message = e.what() + write_last_good();
+      finish("failed: " + message);
+      throw SimulationError(message);
+    }
+    throw;
+  }
+  finish("completed");
+  return summary;
+}
+
+}  // namespace
+
+RunSummary run_case(const Case& c, const RunOptions& options) {
+  return with_dimension_and_shape(c.system.dimension, c.system.shape_function,
+                                  [&]<int D, class Shape>() { return run<D, Shape>(c, options); });
+}
+
+void describe_case(const Case& c) {
+  with_dimension_and_shape(c.system.dimension, c.system.shape_function, [&]<int D, class Shape>() {
+    const Scheme& scheme = scheme_named(c.scheme);
+    Simulation<D, Shape> sim(c.system, scheme.wiring, c.dt_auto ? 0.0 : c.dt);
+    if (c.reference) c.reference->initialise(sim.system());
+    log_system(c, sim.system(), scheme);
+  });
+}
+
+}  // namespace flowmpm

@@ -1,0 +1,68 @@
+// Particles of one material: a batch, stored as one array per field
+// (structure of arrays) and kept sorted by grid block, so that neighbours in
+// memory are neighbours in space. Fields no part of the scene reads are not
+// stored (empty arrays).
+#pragma once
+#include <cstdint>
+#include <variant>
+#include <vector>
+
+#include "core/vec.hpp"
+#include "core/voigt.hpp"
+#include "materials/material.hpp"
+
+namespace flowmpm {
+
+// The state arrays of a batch's model (empty for models without state).
+template <class Variant>
+struct StateArraysOf;
+template <class... Models>
+struct StateArraysOf<std::variant<Models...>> {
+  using type = std::variant<StateArray<Models>...>;
+};
+using MaterialStates = StateArraysOf<Material>::type;
+
+template <int D>
+struct ParticleBatch {
+  int body = 0;      // index into SystemSpec::bodies
+  int material = 0;  // index into SystemSpec::materials
+  double particle_length = 0.0;  // initial particle size (m), see MaterialInput::length
+  Vec<D> half_width = Vec<D>::Zero();  // initial half-width per axis, in cells (uGIMP)
+  std::vector<Vec<D>> x, v;                // m, m/s
+  std::vector<Vec<D>> x0;                  // initial positions, only when a reference needs them
+  std::vector<double> mass, volume;        // kg, m^3
+  std::vector<Voigt> stress, strain;       // Pa, -
+  MaterialStates states;                   // the model's internal variables
+
+  // Particles of block b are [block_begin[b], block_begin[b + 1]).
+  std::vector<std::uint32_t> block_begin;
+
+  std::size_t size() const { return x.size(); }
+
+  // Calls f(name, column) for every per-particle array, the model's states
+  // included: the one list of the fields, which the sort permutes and the
+  // output snapshot copies by name, so that no field can be left behind.
+  template <class F>
+  void for_each_column(F&& f) {
+    for_each_column_of(*this, f);
+  }
+  template <class F>
+  void for_each_column(F&& f) const {
+    for_each_column_of(*this, f);
+  }
+
+ private:
+  template <class Self, class F>
+  static void for_each_column_of(Self& self, F& f) {
+    f("position", self.x);
+    f("velocity", self.v);
+    f("initial_position", self.x0);
+    f("mass", self.mass);
+    f("volume", self.volume);
+    f("stress", self.stress);
+    f("strain", self.strain);
+    std::visit([&](auto& states) { f("state", states); }, self.states);
+  }
+};
+
+}  // namespace flowmpm

@@ -1,0 +1,62 @@
+// The registry of shape functions: each is a type with
+//   static constexpr const char* name;     // the case file's analysis.shape_function
+//   static constexpr int support;          // nodes per axis of its 1D stencil
+//   static constexpr int reach_below, reach_above;  // nodes c - below ... c + above of cell c
+//   static void stencil(double g, double inv_h, double half_width, int& base,
+//                       double (&w)[support], double (&dw)[support]);
+// Adding one is one new file and one line in the list below; the engine is
+// compiled for each (a template parameter of the hot loops).
+#pragma once
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "discretisation/shape_bspline.hpp"
+#include "discretisation/shape_gimp.hpp"
+#include "discretisation/shape_linear.hpp"
+
+namespace flowmpm {
+
+template <class... Shapes>
+struct ShapeList {
+  static std::vector<std::string> names() { return {Shapes::name...}; }
+};
+
+using ShapeFunctions = ShapeList<LinearShape, GimpShape, QuadraticBSpline, CubicBSpline>;
+
+inline std::vector<std::string> shape_function_names() { return ShapeFunctions::names(); }
+
+namespace detail {
+template <class F, class First, class... Rest>
+decltype(auto) with_shape_in(std::string_view name, F& f, ShapeList<First, Rest...>) {
+  if (name == First::name) return f.template operator()<First>();
+  if constexpr (sizeof...(Rest) > 0) {
+    return with_shape_in(name, f, ShapeList<Rest...>{});
+  } else {
+    throw std::invalid_argument("unknown shape function \"" + std::string(name) + "\"");
+  }
+}
+}  // namespace detail
+
+// Calls f.template operator()<Shape>() for the shape function named `name`.
+template <class F>
+decltype(auto) with_shape_function(std::string_view name, F&& f) {
+  return detail::with_shape_in(name, f, ShapeFunctions{});
+}
+
+// Calls f.template operator()<D, Shape>() for a dimension (1, 2 or 3) and a
+// shape function: the one dispatch from run-time choices to compiled code.
+template <class F>
+decltype(auto) with_dimension_and_shape(int dimension, std::string_view shape, F&& f) {
+  return with_shape_function(shape, [&]<class Shape>() -> decltype(auto) {
+    switch (dimension) {
+      case 1: return f.template operator()<1, Shape>();
+      case 2: return f.template operator()<2, Shape>();
+      case 3: return f.template operator()<3, Shape>();
+    }
+    throw std::invalid_argument("dimension " + std::to_string(dimension) + " is not 1, 2 or 3");
+  });
+}
+
+}  // namespace flowmpm

@@ -1,0 +1,34 @@
+// Linear (classic MPM) shape functions: the tensor product of 1D hat
+// functions N(xi) = 1 - |xi|, xi = (x - x_I) / h. A particle in cell c
+// touches the two nodes c and c + 1 along each axis. The particle domain is
+// a Dirac point, so the gradient jumps when a particle crosses a cell face
+// (the cell-crossing error of classic MPM).
+#pragma once
+#include "core/vec.hpp"
+
+namespace flowmpm {
+
+struct LinearShape {
+  static constexpr const char* name = "linear";
+  // Nodes of support per axis.
+  static constexpr int support = 2;
+  // Nodes touched, relative to the cell c that holds the particle:
+  // c - reach_below ... c + reach_above.
+  static constexpr int reach_below = 0;
+  static constexpr int reach_above = 1;
+
+  // 1D stencil for a particle at grid coordinate g = (x - origin) / h with
+  // half-width l_p / h (unused here): first node `base`, weights w and
+  // derivatives dw = dN/dx.
+  [[gnu::always_inline]] static void stencil(double g, double inv_h, double, int& base, double (&w)[support],
+                                             double (&dw)[support]) {
+    base = floor_nonnegative(g);  // g >= 0 inside the grid
+    const double s = g - base;
+    w[0] = 1.0 - s;
+    w[1] = s;
+    dw[0] = -inv_h;
+    dw[1] = inv_h;
+  }
+};
+
+}  // namespace flowmpm

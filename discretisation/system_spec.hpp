@@ -1,0 +1,64 @@
+// What a discrete system is built from (build_system.hpp): the grid, the
+// bodies with their materials, the node sets and the analysis choices, as
+// plain validated structs. io fills them from a case file; the tests and the
+// bench may fill them directly. SI units: m, s, kg, Pa.
+#pragma once
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/time_function.hpp"
+#include "core/vec.hpp"
+#include "materials/material.hpp"
+
+namespace flowmpm {
+
+struct GridSpec {
+  Vec3 origin{};
+  Vec3 cell_size{1.0, 1.0, 1.0};
+  std::array<int, 3> cells{1, 1, 1};
+};
+
+struct BodySpec {
+  std::string name;
+  int material = 0;           // index into SystemSpec::materials
+  Vec3 box_min{}, box_max{};  // the box filled with particles
+  Vec3 spacing{};             // particle spacing per axis (m)
+  Vec3 velocity{};            // initial velocity (m/s)
+  // Rotation of the material axes (degrees) about z, y, x: R = Rz Ry Rx.
+  Vec3 material_axes{};
+  // Cylindrical material axes: each particle's angle about z gets
+  // atan2(y - y_c, x - x_c) added, so that the material x axis points away
+  // from the axis through (x_c, y_c) parallel to z (wood: radial, with the
+  // material y tangential and z along the pith).
+  std::optional<std::array<double, 2>> material_axes_center;
+};
+
+struct NodeSetSpec {
+  std::string name;
+  // Nodes with x_axis == at (plane), or inside [box_min, box_max] (box).
+  bool is_plane = true;
+  int axis = 0;
+  double at = 0.0;
+  Vec3 box_min{}, box_max{};
+  // Prescribed velocity per axis (m/s) as a function of time; absent = free.
+  std::array<std::optional<TimeFunction>, 3> velocity;
+};
+
+struct SystemSpec {
+  std::string source;  // where it was read from (the case file), for messages
+  int dimension = 3;
+  bool plane_stress = false;              // 2D: plane stress instead of plane strain
+  std::string shape_function = "linear";  // a name of shape_function_names()
+  double flip_fraction = 1.0;             // 1: FLIP, 0: PIC
+  Vec3 gravity{};                         // m/s^2
+  double dt = 0.0;                        // the first step's time step (s)
+  bool keep_initial_positions = false;    // store x0 (a reference measures from it)
+  GridSpec grid;
+  std::vector<NamedMaterial> materials;
+  std::vector<BodySpec> bodies;
+  std::vector<NodeSetSpec> node_sets;
+};
+
+}  // namespace flowmpm

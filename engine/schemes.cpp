@@ -1,0 +1,48 @@
+#include "engine/schemes.hpp"
+
+#include <stdexcept>
+
+#include "core/registry.hpp"
+
+namespace flowmpm {
+namespace {
+
+// A chain of nodes; `heads` all feed the first element of `chain`.
+Wiring chain(std::vector<StageGroup> heads, std::vector<StageGroup> chain) {
+  Wiring w;
+  w.nodes = heads;
+  const int first = static_cast<int>(w.nodes.size());
+  w.nodes.insert(w.nodes.end(), chain.begin(), chain.end());
+  for (int h = 0; h < first; ++h) w.edges.emplace_back(h, first);
+  for (int i = first; i + 1 < static_cast<int>(w.nodes.size()); ++i) w.edges.emplace_back(i, i + 1);
+  return w;
+}
+
+}  // namespace
+
+const std::vector<Scheme>& schemes() {
+  using enum Stage;
+  static const std::vector<Scheme> table = {
+      {"usf", "USF",
+       chain({{p2g_momentum}}, {{grid_velocity}, {g2p_stress}, {p2g_force}, {grid_integrate}, {g2p_motion}})},
+      {"usl", "USL", chain({{p2g_momentum, p2g_force}}, {{grid_velocity}, {grid_integrate}, {g2p_motion, g2p_stress}})},
+      {"musl", "MUSL",
+       chain({{p2g_momentum, p2g_force}},
+             {{grid_velocity}, {grid_integrate}, {g2p_motion}, {remap}, {grid_velocity}, {g2p_stress}})},
+  };
+  return table;
+}
+
+std::vector<std::string> scheme_names() {
+  std::vector<std::string> names;
+  for (const Scheme& s : schemes()) names.push_back(s.name);
+  return names;
+}
+
+const Scheme& scheme_named(std::string_view name) {
+  for (const Scheme& s : schemes())
+    if (s.name == name) return s;
+  throw std::invalid_argument("unknown scheme \"" + std::string(name) + "\"; known: " + quoted_list(scheme_names()));
+}
+
+}  // namespace flowmpm

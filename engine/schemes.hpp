@@ -1,0 +1,27 @@
+// The registry of schemes: each is a name and a wiring of the stage nodes
+// (engine/step_graph.hpp). Adding a scheme is one entry in schemes.cpp.
+//   USF:  p2g_momentum -> grid_velocity -> g2p_stress -> p2g_force -> grid_integrate -> g2p_motion
+//   USL:  p2g_momentum & p2g_force -> grid_velocity -> grid_integrate -> g2p_motion & g2p_stress
+//   MUSL: p2g_momentum & p2g_force -> grid_velocity -> grid_integrate -> g2p_motion -> remap
+//         -> grid_velocity -> g2p_stress
+#pragma once
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "engine/step_graph.hpp"
+
+namespace flowmpm {
+
+struct Scheme {
+  std::string name;   // the case file's analysis.scheme, "usl"
+  std::string label;  // for people, "USL"
+  Wiring wiring;
+};
+
+const std::vector<Scheme>& schemes();
+std::vector<std::string> scheme_names();
+// The scheme called `name`; throws std::invalid_argument listing the known ones.
+const Scheme& scheme_named(std::string_view name);
+
+}  // namespace flowmpm

@@ -1,0 +1,28 @@
+// The stages of one explicit step (README "How a step runs"). A scheme
+// (engine/schemes.hpp) wires graph nodes, each running one stage or a
+// group of stages in one pass over the particles.
+#pragma once
+#include <array>
+#include <string>
+#include <vector>
+
+namespace flowmpm {
+
+enum class Stage { p2g_momentum, p2g_force, grid_velocity, grid_integrate, g2p_motion, g2p_stress, remap };
+
+inline constexpr std::array<const char*, 7> stage_names = {
+    "p2g_momentum", "p2g_force", "grid_velocity", "grid_integrate", "g2p_motion", "g2p_stress", "remap"};
+
+inline const char* stage_name(Stage s) { return stage_names[static_cast<std::size_t>(s)]; }
+
+// The stages one graph node runs, in order, in one pass.
+using StageGroup = std::vector<Stage>;
+
+// "p2g_momentum & p2g_force".
+inline std::string group_name(const StageGroup& group) {
+  std::string name;
+  for (Stage s : group) name += (name.empty() ? "" : " & ") + std::string(stage_name(s));
+  return name;
+}
+
+}  // namespace flowmpm

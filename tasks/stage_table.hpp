@@ -1,0 +1,44 @@
+// The stage table: which pass over the particles or the grid runs a group of
+// stages. A scheme's wiring is resolved against it once, when the step graph
+// is built; the step itself calls the passes found, with no look-up.
+// A group two stages share runs them in one pass, each particle's stencil
+// evaluated once: the two p2g stages (they read the same start-of-step
+// particles), and USL's g2p_motion with g2p_stress.
+#pragma once
+#include <stdexcept>
+
+#include "tasks/g2p.hpp"
+#include "tasks/grid_update.hpp"
+#include "tasks/p2g.hpp"
+#include "tasks/stage.hpp"
+
+namespace flowmpm {
+
+template <int D, class Shape>
+using StagePass = void (*)(DiscreteSystem<D, Shape>&);
+
+// The pass that runs `group`; throws std::invalid_argument if none does.
+template <int D, class Shape>
+StagePass<D, Shape> stage_pass(const StageGroup& group) {
+  struct Entry {
+    StageGroup stages;
+    StagePass<D, Shape> pass;
+  };
+  static const Entry table[] = {
+      {{Stage::p2g_momentum}, &p2g_momentum<D, Shape>},
+      {{Stage::p2g_force}, &p2g_force<D, Shape>},
+      {{Stage::p2g_momentum, Stage::p2g_force}, &p2g_momentum_and_force<D, Shape>},
+      {{Stage::grid_velocity}, &grid_velocity<D, Shape>},
+      {{Stage::grid_integrate}, &grid_integrate<D, Shape>},
+      {{Stage::g2p_motion}, &g2p_motion<D, Shape>},
+      {{Stage::g2p_stress}, &g2p_stress<D, Shape>},
+      {{Stage::g2p_motion, Stage::g2p_stress}, &g2p_motion_and_stress<D, Shape>},
+      // MUSL: mass and momentum mapped again from the updated particles.
+      {{Stage::remap}, &p2g_momentum<D, Shape>},
+  };
+  for (const Entry& e : table)
+    if (e.stages == group) return e.pass;
+  throw std::invalid_argument("no pass runs the stages " + group_name(group));
+}
+
+}  // namespace flowmpm

@@ -1,0 +1,55 @@
+// The analytical solution a case is measured against, chosen by the `type`
+// of its [reference] table (README "Verification"). Each solution reads and
+// checks its own keys, may set initial conditions, is sampled during the
+// run, and reports named error norms for summary.json and sweeps. Adding
+// one is one new file and one line in the variant below.
+#pragma once
+#include <cstdint>
+#include <map>
+#include <string>
+#include <variant>
+
+#include "core/registry.hpp"
+#include "verification/axial_vibration.hpp"
+#include "verification/column_self_weight.hpp"
+#include "verification/elastic_wave.hpp"
+#include "verification/uniaxial_stress.hpp"
+
+namespace flowmpm {
+
+using ReferenceSolution = std::variant<AxialVibration, ElasticWave, UniaxialStress, ColumnSelfWeight>;
+using ReferenceSolutions = Registry<ReferenceSolution>;
+
+class Reference {
+ public:
+  // Reads a [reference] table: `type`, the solution's own keys, and
+  // `samples`, how many times the errors are sampled (0: every step).
+  static Reference read(ParameterTable& t, const ReferenceContext& context) {
+    Reference r{ReferenceSolutions::read(t, "type", context)};
+    r.samples_ = t.integer_or("samples", 0);
+    t.require(r.samples_ >= 0, "samples", "a number of error samples >= 0 (0: every step)");
+    return r;
+  }
+
+  const char* type() const { return ReferenceSolutions::name_of(solution_); }
+  std::int64_t samples() const { return samples_; }
+
+  template <int D, class Shape>
+  void initialise(DiscreteSystem<D, Shape>& system) const {
+    std::visit([&](const auto& s) { s.initialise(system); }, solution_);
+  }
+  template <int D, class Shape>
+  void sample(const DiscreteSystem<D, Shape>& system) {
+    std::visit([&](auto& s) { s.sample(system); }, solution_);
+  }
+  std::map<std::string, double> errors() const {
+    return std::visit([](const auto& s) { return s.errors(); }, solution_);
+  }
+
+ private:
+  explicit Reference(ReferenceSolution solution) : solution_(std::move(solution)) {}
+  ReferenceSolution solution_;
+  std::int64_t samples_ = 0;
+};
+
+}  // namespace flowmpm
