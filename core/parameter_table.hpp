@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/errors.hpp"
 #include "core/time_function.hpp"
 
 namespace flowmpm {
@@ -32,10 +33,12 @@ class ParameterTable {
   // quantity and its unit for messages ("a temperature change in K").
   virtual TimeFunction time_function(std::string_view key, std::string_view what) = 0;
 
-  // Fails naming the key, its line and what was expected.
-  [[noreturn]] virtual void fail(std::string_view key, std::string_view expected) const = 0;
-  // Fails for the table as a whole.
-  [[noreturn]] virtual void fail_table(std::string_view message) const = 0;
+  // Throws CaseError naming the key, its line and what was expected.
+  [[noreturn]] void fail(std::string_view key, std::string_view expected) const {
+    throw CaseError(failure(key, expected));
+  }
+  // Throws CaseError about the table as a whole.
+  [[noreturn]] void fail_table(std::string_view message) const { throw CaseError(table_failure(message)); }
 
   double number_or(std::string_view key, double fallback) { return has(key) ? number(key) : fallback; }
   std::int64_t integer_or(std::string_view key, std::int64_t fallback) { return has(key) ? integer(key) : fallback; }
@@ -52,6 +55,11 @@ class ParameterTable {
   void require(bool ok, std::string_view key, std::string_view expected) const {
     if (!ok) fail(key, expected);
   }
+
+ protected:
+  // The complete messages of fail() and fail_table(), with the location.
+  virtual std::string failure(std::string_view key, std::string_view expected) const = 0;
+  virtual std::string table_failure(std::string_view message) const = 0;
 };
 
 // The index of the axis named by `key`: "x", "y" or "z", one of the first

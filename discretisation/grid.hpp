@@ -2,7 +2,7 @@
 // axis, nodal fields as flat arrays indexed i + n_x (j + n_y k). Cells are
 // grouped into cubic blocks of `block_cells` cells per axis; the blocks
 // are coloured by the parity of their block index (2^D colours) so that
-// blocks of one colour share no node (see engine/blocks.hpp).
+// blocks of one colour share no node (see discretisation/blocks.hpp).
 #pragma once
 #include <array>
 #include <cstddef>

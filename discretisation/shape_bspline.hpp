@@ -1,5 +1,5 @@
 // Quadratic and cubic B-spline shape functions on the uniform grid
-// (Steffen, Kirby and Berzins 2008): C1 and C2 continuous, so particles
+// [Steffen 2008]: C1 and C2 continuous, so particles
 // crossing cells cause no jump in force. With r = |x - x_I| / h:
 //   quadratic: N = 3/4 - r^2 (r < 1/2), (3/2 - r)^2 / 2 (1/2 <= r < 3/2)
 //   cubic:     N = 2/3 - r^2 + r^3/2 (r < 1), (2 - r)^3 / 6 (1 <= r < 2)

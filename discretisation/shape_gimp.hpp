@@ -1,7 +1,7 @@
-// Uniform GIMP (uGIMP; seed 004, Bardenhagen and Kober 2004): the linear
+// Uniform GIMP (uGIMP; [Bardenhagen 2004], as used by [Le 2010]): the linear
 // hat function averaged over the particle's domain, a box of the particle's
 // initial half-width l_p that translates with it (never deformed). In 1D,
-// with d = x_p - x_I (REFERENCES.md):
+// with d = x_p - x_I:
 //   |d| < l_p:              S = 1 - (d^2 + l_p^2) / (2 h l_p)
 //   l_p <= |d| < h - l_p:   S = 1 - |d| / h
 //   h - l_p <= |d| < h + l_p: S = (h + l_p - |d|)^2 / (4 h l_p)

@@ -74,21 +74,21 @@ std::string TableReader::location(const toml::node& node, std::string_view key) 
   return source_of(node, file_);
 }
 
-void TableReader::fail_at(const toml::node& node, std::string_view key,
-                          std::string_view expected) const {
-  throw CaseError(location(node, key) + ": " + dotted(key) + ": expected " + std::string(expected) + ", got " +
-                  describe(node));
+std::string TableReader::failure_at(const toml::node& node, std::string_view key, std::string_view expected) const {
+  return location(node, key) + ": " + dotted(key) + ": expected " + std::string(expected) + ", got " + describe(node);
 }
 
-void TableReader::fail(std::string_view key, std::string_view expected) const {
-  if (const toml::node* n = table_->get(key)) fail_at(*n, key, expected);
-  throw CaseError(source_of(*table_, file_) + ": " + dotted(key) + ": missing; expected " +
-                  std::string(expected));
+void TableReader::fail_at(const toml::node& node, std::string_view key, std::string_view expected) const {
+  throw CaseError(failure_at(node, key, expected));
 }
 
-void TableReader::fail_table(std::string_view message) const {
-  throw CaseError(source_of(*table_, file_) + ": " + (path_.empty() ? "case" : path_) + ": " +
-                  std::string(message));
+std::string TableReader::failure(std::string_view key, std::string_view expected) const {
+  if (const toml::node* n = table_->get(key)) return failure_at(*n, key, expected);
+  return source_of(*table_, file_) + ": " + dotted(key) + ": missing; expected " + std::string(expected);
+}
+
+std::string TableReader::table_failure(std::string_view message) const {
+  return source_of(*table_, file_) + ": " + (path_.empty() ? "case" : path_) + ": " + std::string(message);
 }
 
 const toml::node& TableReader::required(std::string_view key) {

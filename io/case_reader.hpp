@@ -41,8 +41,6 @@ class TableReader : public ParameterTable {
                      std::string_view fallback = {}) override;
   std::vector<double> numbers(std::string_view key, std::size_t count) override;
   TimeFunction time_function(std::string_view key, std::string_view what) override;
-  [[noreturn]] void fail(std::string_view key, std::string_view expected) const override;
-  [[noreturn]] void fail_table(std::string_view message) const override;
 
   std::vector<std::string> strings(std::string_view key);
 
@@ -60,12 +58,16 @@ class TableReader : public ParameterTable {
   const std::string& file() const { return file_; }
   const std::string& path() const { return path_; }
 
+ protected:
+  std::string failure(std::string_view key, std::string_view expected) const override;
+  std::string table_failure(std::string_view message) const override;
+
  private:
   const toml::node& required(std::string_view key);
   // "file:line" of a node, or the --set that gave it.
   std::string location(const toml::node& node, std::string_view key) const;
-  [[noreturn]] void fail_at(const toml::node& node, std::string_view key,
-                            std::string_view expected) const;
+  std::string failure_at(const toml::node& node, std::string_view key, std::string_view expected) const;
+  [[noreturn]] void fail_at(const toml::node& node, std::string_view key, std::string_view expected) const;
 
   const toml::table* table_;
   std::string path_, file_;

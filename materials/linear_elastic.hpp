@@ -1,4 +1,4 @@
-// Isotropic linear elasticity, small strain (seed 000, DESIGN.md):
+// Isotropic linear elasticity, small strain ([Sulsky 1994]):
 //   d sigma = lambda tr(d eps) I + 2 mu d eps,
 //   lambda = E nu / ((1 + nu)(1 - 2 nu)), mu = E / (2 (1 + nu)).
 // Rate form, so that it composes with return mapping later.

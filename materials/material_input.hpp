@@ -23,7 +23,7 @@ struct MaterialInput {
 struct ParticleInit {
   std::array<double, 3> position{};  // m
   // Material-axes rotation of the particle, in degrees, about z, y and x,
-  // applied as R = Rz Ry Rx (NairnMPM's convention; seed 002): its body's
+  // applied as R = Rz Ry Rx ([NairnMPM]'s convention): its body's
   // material_axes, plus its polar angle about material_axes_center if the
   // body has one. In 2D only the angle about z is used.
   std::array<double, 3> axes_degrees{};

@@ -1,5 +1,5 @@
 // Orthotropic linear elasticity, small strain, with thermal and solvent
-// expansion (seed 002; REFERENCES.md "Orthotropic elasticity"). In material
+// expansion ([NairnMPM] "Orthotropic Material"). In material
 // axes x, y, z (Voigt order xx, yy, zz, yz, xz, xy, tensor shear):
 //   eps = S sigma + alpha dT(t) + beta c(t),   sigma = C (eps - alpha dT - beta c),
 //   S normal block [[1/Ex, -nu_yx/Ey, -nu_zx/Ez],

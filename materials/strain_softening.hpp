@@ -1,4 +1,4 @@
-// Linear strain-softening damage (seed 001; Vignjevic et al., eqs. 5.98 and
+// Linear strain-softening damage ([Vignjevic], eqs. 5.98 and
 // 5.99), small strain, isotropic elasticity (E, nu; lambda, mu):
 //   sigma = (1 - omega) C eps,   secant unloading towards the origin,
 //   omega(kappa) = 0                                          kappa <= eps_i,
@@ -10,7 +10,7 @@
 // Equivalent strain: energy norm eps_eq = sqrt(eps : C : eps / E), which is
 // |eps_xx| in uniaxial stress and sqrt(M / E) eps_xx in uniaxial strain
 // (M = lambda + 2 mu). It treats tension and compression alike (as the
-// seed's one-dimensional law in |eps|): a model of tensile cracking under
+// one-dimensional law of [Vignjevic] in |eps|): a model of tensile cracking under
 // tensile loading, not of compressive crushing.
 // Dissipation: Y d omega with Y = eps : C : eps / 2 = E kappa^2 / 2 while
 // damage grows, which integrates in closed form to

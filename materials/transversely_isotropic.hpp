@@ -1,5 +1,5 @@
 // Transversely isotropic linear elasticity with thermal and solvent
-// expansion (seed 002, NairnMPM's "Transverse 1" and "Transverse 2"): an
+// expansion ([NairnMPM] "Transverse 1" and "Transverse 2"): an
 // orthotropic material (materials/orthotropic.hpp) isotropic in the plane
 // normal to its axial direction A, which lies along material z (axis = "z")
 // or material y (axis = "y"). Parameters: EA, ET, GA = G_AT, one of

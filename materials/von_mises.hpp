@@ -1,5 +1,5 @@
 // Von Mises (J2) plasticity with isotropic hardening and Wilkins' radial
-// return (seed 003; REFERENCES.md "von Mises plasticity"), small strain,
+// return ([Wilkins 1964]; [Simo 1998]), small strain,
 // isotropic linear elasticity (lambda, mu = G, K = lambda + 2 mu / 3).
 //   Yield: q = sqrt(3/2 s:s) <= sigma_Y(eps_p), s the stress deviator.
 //   Hardening: linear   sigma_Y = sigma_0 + H eps_p,
@@ -10,14 +10,14 @@
 // (closed form d eps_p = (q* - sigma_Y) / (3 G + H) for linear hardening,
 // Newton otherwise) and the deviator is scaled radially, s = M s* with
 // M = 1 - 3 G d eps_p / q*, the pressure unchanged.
-// Plane stress (sigma_zz = 0, eps_zz free): Wilkins' return (seed 003,
+// Plane stress (sigma_zz = 0, eps_zz free): Wilkins' return ([Psakhie 2013],
 // Appendix C). The trial is plane-stress elastic (sigma*_zz = 0); an extra
 // out-of-plane strain delta and the radial factor M satisfy together
 //   sigma_zz = 0:  delta = s*_zz (1 - M) / (K + 4 G M / 3),
 //   yield:         F(M) = M q'(M) - sigma_Y(eps_p + (1 - M) q'(M) / (3 G)) = 0,
 // q'(M) the equivalent stress of the trial corrected by delta,
-// q'^2 = 3/2 s*:s* + 6 G delta s*_zz + 4 G^2 delta^2 (the quartic of the
-// seed when squared out). F is solved by Newton from M_0 = sigma_Y / q*, kept
+// q'^2 = 3/2 s*:s* + 6 G delta s*_zz + 4 G^2 delta^2 (the quartic of
+// [Psakhie 2013] when squared out). F is solved by Newton from M_0 = sigma_Y / q*, kept
 // inside a bracket [lo, hi] of (0, 1] with F(lo) < 0 < F(hi) (bisection when
 // a step leaves it), to |F| <= newton_tolerance q*; not converging in
 // newton_iterations is a std::runtime_error. This equals the 3D radial return

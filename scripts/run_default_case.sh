@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Sets up, builds and runs the shipped default case: the uniaxial stress
-# benchmark (seed 000), Case I, with USF, USL and MUSL, then prints the
+# benchmark (CB-Geo mpm-benchmarks), Case I, with USF, USL and MUSL, then prints the
 # table of results at t = 0.1 s against the analytical solution.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -10,7 +10,7 @@ for scheme in usf usl musl; do
 done
 python3 - <<'PY'
 import json
-print("Uniaxial stress, Case I, t = 0.1 s (seed 000); analytical: "
+print("Uniaxial stress, Case I, t = 0.1 s; analytical: "
       "eps_yy = -0.001, eps_xx = 0.0002, sigma_yy = -1 Pa, sigma_xx = 0")
 print(f"{'scheme':8}{'eps_yy':>12}{'eps_xx':>12}{'sigma_yy':>12}{'sigma_xx':>12}{'Mpsteps/s':>11}")
 for scheme in ("usf", "usl", "musl"):

@@ -1,4 +1,4 @@
-// Grid stages (DESIGN.md). grid_velocity: v_I = p_I / m_I where m_I is above
+// Grid stages (README "How a step runs"). grid_velocity: v_I = p_I / m_I where m_I is above
 // the mass threshold, then the prescribed velocities (p_I follows).
 // grid_integrate: p_I += f_I dt, v_I^new = p_I / m_I, prescribed velocities
 // at t + dt, and dv_I = v_I^new - v_I for the FLIP update; v_I becomes

@@ -156,6 +156,30 @@ TEST_CASE("a bad case file is rejected with one clear message and nothing is wri
     const int line = c.replace("scheme = ", "scheme = \"usx\"");
     expect_rejected(dir, c.text(), line, {"analysis.scheme", "\"usf\"", "\"usl\"", "\"musl\"", "usx"});
   }
+  SUBCASE("an unknown shape function: the known ones are listed") {
+    const int line = c.replace("shape_function = ", "shape_function = \"quadratic\"");
+    expect_rejected(dir, c.text(), line,
+                    {"analysis.shape_function", "\"linear\"", "\"gimp\"", "\"bspline2\"", "\"bspline3\"", "quadratic"});
+  }
+  SUBCASE("an unknown material type: the known ones are listed") {
+    const int line = c.replace("type = ", "type = \"elastic\"");
+    expect_rejected(dir, c.text(), line,
+                    {"materials.elastic.type", "\"linear_elastic\"", "\"von_mises\"", "\"strain_softening\""});
+  }
+  SUBCASE("an unknown reference type: the known ones are listed") {
+    c.lines.push_back("[reference]");
+    c.lines.push_back("type = \"axial\"");
+    expect_rejected(dir, c.text(), static_cast<int>(c.lines.size()),
+                    {"reference.type", "\"axial_vibration\"", "\"elastic_wave\"", "\"column_self_weight\""});
+  }
+  SUBCASE("a reference's own check names its key") {
+    c.lines.push_back("[reference]");
+    c.lines.push_back("type = \"uniaxial_stress\"");
+    c.lines.push_back("axis = \"w\"");
+    c.lines.push_back("length = 1.0");
+    c.lines.push_back("velocity = -0.01");
+    expect_rejected(dir, c.text(), static_cast<int>(c.lines.size()) - 2, {"reference.axis", "\"x\", \"y\" or \"z\""});
+  }
   SUBCASE("a body whose material does not exist") {
     const int line = c.replace("material = ", "material = \"steel\"");
     expect_rejected(dir, c.text(), line, {"bodies[0].material", "steel", "\"elastic\""});
@@ -215,6 +239,25 @@ TEST_CASE("command-line misuse") {
     INFO(r.output);
     CHECK(r.status == 0);
     CHECK(contains(r.output, "Usage"));
+  }
+  SUBCASE("a command's own --help") {
+    const Result r = run_flowmpm({"run", "--help"}, dir.path);
+    INFO(r.output);
+    CHECK(r.status == 0);
+    CHECK(contains(r.output, "--threads"));
+    CHECK(contains(r.output, "--set"));
+    CHECK_FALSE(contains(r.output, "--jobs"));
+  }
+  SUBCASE("--option=value as well as --option value") {
+    const Result r = run_flowmpm({"check", case_file.string(), "--set=analysis.scheme=musl"}, dir.path);
+    INFO(r.output);
+    CHECK(r.status == 0);
+    CHECK(contains(r.output, "MUSL"));
+    const Result t = run_flowmpm({"run", case_file.string(), "--threads=2", "--quiet", "--output=out"}, dir.path);
+    INFO(t.output);
+    CHECK(t.status == 0);
+    CHECK(contains(read_text(dir.path / "out" / "summary.json"), "\"threads\": 2"));
+    fs::remove_all(dir.path / "out");
   }
   SUBCASE("--version") {
     const Result r = run_flowmpm({"--version"}, dir.path);

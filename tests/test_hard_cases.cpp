@@ -102,7 +102,7 @@ TEST_CASE("(d) two elastic blocks colliding: energy drift bounded with uGIMP and
   // No external work: kinetic + strain energy is conserved in the continuum.
   // USL (stress from the step's own stencil) gains no energy; NairnMPM's
   // author reports FLIP losing about 3 % over a two-disk impact
-  // (REFERENCES.md). Measured drift: uGIMP FLIP -3.1 %; linear FLIP -25 %
+  // ([NairnMPM]). Measured drift: uGIMP FLIP -3.1 %; linear FLIP -25 %
   // (cell-crossing noise); PIC loses 17-83 %, more than FLIP for every
   // shape function.
   const Case gimp = read_case(testing::config("hard/impact_2d.toml"));

@@ -1,5 +1,5 @@
 // The linear elastic material point driven along prescribed strain paths,
-// against Hooke's law in closed form (E = 1000 Pa, nu = 0.2 as in seed 000;
+// against Hooke's law in closed form (E = 1000 Pa, nu = 0.2 as in the uniaxial stress benchmark;
 // lambda = 277.78 Pa, mu = 416.67 Pa). The update is incremental, so the
 // path is applied in 100 increments; the result is linear, hence exact up
 // to round-off (tolerance 1e-12 relative).

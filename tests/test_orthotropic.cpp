@@ -1,7 +1,7 @@
 // Orthotropic and transversely isotropic elasticity (materials/orthotropic.hpp,
 // materials/transversely_isotropic.hpp) at a material point and in whole
-// cases, against closed forms. Material: hybrid poplar strands (seed 004,
-// Table 3.1; REFERENCES.md) with L = x, R = y, T = z.
+// cases, against closed forms. Material: hybrid poplar strands ([Le 2010],
+// Table 3.1; docs/REFERENCES.md) with L = x, R = y, T = z.
 //
 // Tolerances:
 //  - Strain-driven material points: the model is linear, so the stress is

@@ -1,5 +1,5 @@
 // The order in which the stages of one step run, recorded from the flow
-// graph, against the wirings of DESIGN.md:
+// graph, against the wirings of engine/schemes.hpp:
 //   USF:  p2g_momentum -> grid_velocity -> g2p_stress -> p2g_force -> grid_integrate -> g2p_motion
 //   USL:  p2g_momentum + p2g_force -> grid_velocity -> grid_integrate -> g2p_motion -> g2p_stress
 //   MUSL: p2g_momentum + p2g_force -> grid_velocity -> grid_integrate -> g2p_motion -> remap

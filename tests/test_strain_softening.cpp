@@ -1,5 +1,5 @@
-// Linear strain-softening damage (materials/strain_softening.hpp; seed 001)
-// at a material point and in the seed's bar, against closed forms.
+// Linear strain-softening damage (materials/strain_softening.hpp; [Vignjevic])
+// at a material point and in [Vignjevic]'s bar, against closed forms.
 // Concrete-like: E = 30 GPa, nu = 0.2, eps_i = 1e-4, eps_f = 7e-4 at the
 // material point (G_c = 10 J/m^2 for the crack band); in the bar G_c =
 // 2.5 J/m^2, or eps_f = 2e-4 without regularisation.
@@ -48,7 +48,7 @@ StrainSoftening with_fracture_energy() {
   return std::get<StrainSoftening>(material_from_text(base + "fracture_energy = 10.0\n"));
 }
 
-// The seed's monotonic curve in uniaxial stress.
+// [Vignjevic]'s monotonic curve in uniaxial stress.
 double sigma_of(double eps) {
   if (eps <= eps_i) return E * eps;
   if (eps >= eps_f) return 0.0;
@@ -198,7 +198,7 @@ TEST_CASE("validation") {
 
 namespace {
 
-// The seed's bar: 2 L = 200 mm along x, centred at 0, N square cells of h =
+// [Vignjevic]'s bar: 2 L = 200 mm along x, centred at 0, N square cells of h =
 // 0.2 / N across it (N odd: the centre is a cell centre), one particle per
 // cell, one row; nodes at y = 0 and y = h held in y (uniaxial strain,
 // plane strain). The central particle is a notch, eps_i' = 0.9 eps_i. The

@@ -1,4 +1,4 @@
-// The uniaxial stress benchmark of seed 000 (one 1 m cell, 8 particles,
+// The uniaxial stress benchmark of [CB-Geo] (one 1 m cell, 8 particles,
 // top nodes moving at -0.01 m/s, E = 1000 Pa, nu = 0.2), every case and
 // scheme, at t = 0.1 s.
 //
@@ -11,7 +11,7 @@
 //  - Case III is quasi-static (density 0.01): within 0.2 % on sigma_yy and
 //    eps_xx for every scheme, |sigma_xx| < 0.2 % of |sigma_yy|.
 //  - Cases I and II carry the lateral-inertia error; they must match the
-//    seed's published USF and USL values to the digits published: strains
+//    benchmark's published USF and USL values to the digits published: strains
 //    published to 3 significant digits (tolerance 1e-6, half a unit of the
 //    last digit plus the scheme's detail), stresses to 5e-4 Pa (0.05 % of
 //    sigma_yy; see README for where flowmpm and the published code differ).

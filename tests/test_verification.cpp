@@ -1,4 +1,4 @@
-// Whole cases against analytical solutions (engine/reference/), with the
+// Whole cases against analytical solutions (verification/), with the
 // error at a fixed resolution and the observed convergence rate asserted.
 //
 // Expected rates, small-amplitude vibration of a bar (fixed-free, first
@@ -119,7 +119,7 @@ TEST_CASE("2D column under self weight: displacement history within 1 % for ever
   }
 }
 
-TEST_CASE("uniaxial stress reference: the error norms of the seed's Case III") {
+TEST_CASE("uniaxial stress reference: the error norms of the benchmark's Case III") {
   const auto e = errors_of("uniaxial_stress/case3_usl.toml",
                            {"reference={type=\"uniaxial_stress\", axis=\"y\", length=1.0, velocity=-0.01}"});
   CHECK(e.at("axial_strain") < 1e-9);

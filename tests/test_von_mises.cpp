@@ -1,5 +1,5 @@
 // Von Mises plasticity (materials/von_mises.hpp) at a material point and in
-// a whole case, against closed forms (REFERENCES.md "von Mises plasticity";
+// a whole case, against closed forms ([Wilkins 1964], [Simo 1998];
 // NairnMPM's materials notes). Steel-like: E = 200 GPa, nu = 0.3,
 // sigma_0 = 250 MPa, linear hardening H = 2 GPa, or the power law
 // sigma_Y = sigma_0 (1 + eps_p / 0.01)^0.2.
