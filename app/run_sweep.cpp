@@ -154,6 +154,7 @@ SweepRow run_one(const SweepCase& sc, const fs::path& dir, tbb::task_arena& aren
   c.output.directory = dir;
   RunOptions options;
   options.threads = threads;
+  options.log_to_console = false;
   options.interrupt = interrupt;
   SweepRow row;
   try {
@@ -171,27 +172,12 @@ SweepRow run_one(const SweepCase& sc, const fs::path& dir, tbb::task_arena& aren
   return row;
 }
 
-// The default logger's level for the duration of the sweep.
-class CaseLogLevel {
- public:
-  explicit CaseLogLevel(spdlog::level::level_enum level) : saved_(spdlog::default_logger()->level()) {
-    spdlog::default_logger()->set_level(level);
-  }
-  CaseLogLevel(const CaseLogLevel&) = delete;
-  CaseLogLevel& operator=(const CaseLogLevel&) = delete;
-  ~CaseLogLevel() { spdlog::default_logger()->set_level(saved_); }
-
- private:
-  spdlog::level::level_enum saved_;
-};
-
 }  // namespace
 
 SweepSummary run_sweep(const Sweep& sweep, const SweepOptions& options) {
-  // The sweep's own logger, at the level set for the program; the cases
-  // log through the default logger, at warn while the sweep runs.
+  // The sweep logs its progress at the level set for the program; the
+  // cases log to their own run.log only.
   const auto log = spdlog::default_logger()->clone("sweep");
-  const CaseLogLevel quiet_cases(std::max(spdlog::level::warn, log->level()));
   const auto interrupted = [&] { return options.interrupt && options.interrupt->load(); };
 
   const std::size_t n = sweep.cases.size();

@@ -27,8 +27,7 @@ struct SweepSummary {
 };
 
 // Runs every case not already completed. The sweep logs its progress at
-// the level the default logger has on entry; while it runs, the cases log
-// warnings and errors only. A failed case is recorded in sweep.csv and the
+// the level the default logger has; each case logs to its run.log only. A failed case is recorded in sweep.csv and the
 // others go on. Throws std::runtime_error if sweep.csv or a sweep_row.txt
 // cannot be written.
 SweepSummary run_sweep(const Sweep& sweep, const SweepOptions& options);
