@@ -83,10 +83,10 @@ void log_system(spdlog::logger& log, const Case& c, const DiscreteSystem<D, Shap
   if (system.gravity.norm() > 0.0) log.info("gravity: {} m/s^2", system.gravity.norm());
   const StableStep stable = stable_time_step(c.system);
   if (c.dt_auto) {
-    log.info("time: dt automatic, CFL {} (first step {:.4g} s; the stable limit at rest is {:.4g} s), to t = {} s",
+    log.info("time: dt automatic, CFL {} (first step {:.4g} s; the stable limit at rest is {:.4g} s), to t = {:.6g} s",
                  c.cfl, c.dt, stable.dt, c.end_time);
   } else {
-    log.info("time: dt = {} s ({:.3g} of the stable limit {:.4g} s), {} steps to t = {} s", c.dt,
+    log.info("time: dt = {:.6g} s ({:.3g} of the stable limit {:.4g} s), {} steps to t = {:.6g} s", c.dt,
                  c.dt / stable.dt, stable.dt, c.steps, c.end_time);
   }
 }

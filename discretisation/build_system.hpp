@@ -56,6 +56,7 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
     cells[d] = spec.grid.cells[d];
   }
   system.grid = Grid<D>(origin, h, cells);
+  if constexpr (Shape::gradient_jumps) system.grid.stiffness.assign(system.grid.node_count(), 0.0);
   system.blocks = BlockLayout<D, Shape>(cells);
   for (const auto& m : spec.materials) system.materials.push_back(m.model);
   for (int d = 0; d < D; ++d) system.gravity[d] = spec.gravity[d];
@@ -63,7 +64,6 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
   if (D == 2 && spec.plane_stress) system.stress_state = StressState::plane_stress;
   system.dt = spec.dt;
 
-  double lightest = std::numeric_limits<double>::infinity();
   for (std::size_t bi = 0; bi < spec.bodies.size(); ++bi) {
     const BodySpec& body = spec.bodies[bi];
     ParticleBatch<D> batch;
@@ -129,7 +129,6 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
       throw CaseError(spec.source + ": bodies \"" + body.name + "\" (material \"" +
                       spec.materials[body.material].name + "\"): " + e.what());
     }
-    lightest = std::min(lightest, rho * volume);
     system.batches.push_back(std::move(batch));
   }
   // Particle ids in the order the particles were made: their rows in the output.
@@ -139,9 +138,6 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
     std::iota(batch.id.begin(), batch.id.end(), next_id);
     next_id += static_cast<std::uint32_t>(batch.size());
   }
-  // A node holding less than a millionth of the lightest particle's mass
-  // only sees the far tail of a shape function: its v = p / m is noise.
-  system.mass_threshold = 1e-6 * lightest;
 
   for (const NodeSetSpec& set : spec.node_sets) {
     std::vector<std::size_t> nodes;

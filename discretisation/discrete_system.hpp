@@ -85,8 +85,6 @@ struct DiscreteSystem {
   std::vector<MirrorPlane> mirror_planes;
   Vec<D> gravity = Vec<D>::Zero();
   double flip_fraction = 1.0;
-  // Nodes lighter than this carry no velocity (v = p / m would be noise).
-  double mass_threshold = 0.0;
 
   double t = 0.0, dt = 0.0;  // time at the start of the step, time step (s)
   double max_speed_sq = 0.0;  // largest |v_p|^2 after the last step (m^2/s^2)

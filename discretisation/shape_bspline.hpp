@@ -15,6 +15,7 @@ struct QuadraticBSpline {
   static constexpr int support = 3;
   static constexpr int reach_below = 1;  // nodes c - 1 ... c + 2, three of them
   static constexpr int reach_above = 2;
+  static constexpr bool gradient_jumps = false;  // |dN|^2 / N bounded
 
   [[gnu::always_inline]] static void stencil(double g, double inv_h, double, int& base, double (&w)[support],
                                              double (&dw)[support]) {
@@ -35,6 +36,7 @@ struct CubicBSpline {
   static constexpr int support = 4;
   static constexpr int reach_below = 1;  // nodes c - 1 ... c + 2
   static constexpr int reach_above = 2;
+  static constexpr bool gradient_jumps = false;  // |dN|^2 / N bounded
 
   [[gnu::always_inline]] static void stencil(double g, double inv_h, double, int& base, double (&w)[support],
                                              double (&dw)[support]) {

@@ -21,6 +21,7 @@ struct GimpShape {
   static constexpr int support = 4;  // nodes c - 1 ... c + 2 (at most 3 nonzero)
   static constexpr int reach_below = 1;
   static constexpr int reach_above = 2;
+  static constexpr bool gradient_jumps = false;  // |dN|^2 / N bounded
 
   [[gnu::always_inline]] static void stencil(double g, double inv_h, double lp, int& base, double (&w)[support],
                                              double (&dw)[support]) {

@@ -16,6 +16,10 @@ struct LinearShape {
   // c - reach_below ... c + reach_above.
   static constexpr int reach_below = 0;
   static constexpr int reach_above = 1;
+  // The gradient keeps its full size where the weight vanishes (at a cell
+  // face): the grid update watches the nodes this makes too light for their
+  // stiffness (tasks/grid_update.hpp held_node).
+  static constexpr bool gradient_jumps = true;
 
   // 1D stencil for a particle at grid coordinate g = (x - origin) / h with
   // half-width l_p / h (unused here): first node `base`, weights w and

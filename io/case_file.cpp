@@ -42,7 +42,15 @@ std::string apply_override(toml::table& root, const std::string& assignment) {
 
   std::vector<std::string> parts;
   std::stringstream ss(key);
-  for (std::string part; std::getline(ss, part, '.');) parts.push_back(part);
+  // "bodies[0].velocity" (as messages name keys) is "bodies.0.velocity".
+  for (std::string part; std::getline(ss, part, '.');) {
+    while (!part.empty() && part.back() == ']' && part.find('[') != std::string::npos) {
+      const std::size_t open = part.rfind('[');
+      parts.push_back(part.substr(0, open));
+      part = part.substr(open + 1, part.size() - open - 2);
+    }
+    parts.push_back(part);
+  }
   toml::node* node = &root;
   for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
     if (toml::table* t = node->as_table()) {
