@@ -11,9 +11,9 @@
 #include "core/errors.hpp"
 #include "core/number_text.hpp"
 #include "discretisation/shape_functions.hpp"
-#include "discretisation/stable_time_step.hpp"
 #include "engine/schemes.hpp"
 #include "engine/simulation.hpp"
+#include "engine/stable_time_step.hpp"
 #include "io/results_h5.hpp"
 #include "io/timeseries_csv.hpp"
 #include "io/xdmf.hpp"
@@ -81,13 +81,16 @@ void log_system(spdlog::logger& log, const Case& c, const DiscreteSystem<D, Shap
                  "xyz"[k.axis]);
   }
   if (system.gravity.norm() > 0.0) log.info("gravity: {} m/s^2", system.gravity.norm());
-  const StableStep stable = stable_time_step(c.system);
+  const StableStep stable = stable_time_step(c.system, scheme);
   if (c.dt_auto) {
-    log.info("time: dt automatic, CFL {} (first step {:.4g} s; the stable limit at rest is {:.4g} s), to t = {:.6g} s",
-                 c.cfl, c.dt, stable.dt, c.end_time);
+    log.info("time: dt automatic, CFL {} of h/c = {:.4g} s (the stable limit is {:.3g} h/c for {} with {} at {:.3g} "
+             "particles per cell), to t = {:.6g} s",
+             c.cfl, stable.crossing, stable.factor, scheme.label, Shape::name, stable.particles_per_cell, c.end_time);
   } else {
-    log.info("time: dt = {:.6g} s ({:.3g} of the stable limit {:.4g} s), {} steps to t = {:.6g} s", c.dt,
-                 c.dt / stable.dt, stable.dt, c.steps, c.end_time);
+    log.info("time: dt = {:.6g} s = {:.3g} h/c ({:.3g} of the stable limit {:.3g} h/c for {} with {} at {:.3g} "
+             "particles per cell), {} steps to t = {:.6g} s",
+             c.dt, c.dt / stable.crossing, c.dt / stable.dt(), stable.factor, scheme.label, Shape::name,
+             stable.particles_per_cell, c.steps, c.end_time);
   }
 }
 
@@ -200,8 +203,8 @@ RunSummary run(const Case& c, const RunOptions& options) {
   // last one that passed can be written when the run breaks down.
   ParticleSnapshot last_good;
   std::int64_t last_written = -1;
-  const StableStep stable = stable_time_step(c.system);
-  const double c_max = system.grid.h.minCoeff() / stable.dt;  // fastest wave speed
+  const StableStep stable = stable_time_step(c.system, scheme);
+  const double c_max = system.grid.h.minCoeff() / stable.crossing;  // fastest wave speed
   const double speed_limit = c.guard_speed_factor * c_max;
   auto check_guard = [&] {
     if (system.max_speed_sq <= speed_limit * speed_limit) return;

@@ -36,7 +36,7 @@
 #include <tbb/global_control.h>
 
 #include "discretisation/shape_functions.hpp"
-#include "discretisation/stable_time_step.hpp"
+#include "engine/stable_time_step.hpp"
 #include "engine/schemes.hpp"
 #include "engine/simulation.hpp"
 #include "io/results_h5.hpp"
@@ -73,7 +73,8 @@ SystemSpec block_case(std::size_t target_particles, const std::string& shape) {
   base.at = 0.0;
   for (int d = 0; d < 3; ++d) base.velocity[d] = TimeFunction{{{0.0, 0.0}}};
   c.node_sets.push_back(base);
-  c.dt = 0.5 * stable_time_step(c).dt;
+  const StableStep stable = stable_time_step(c, scheme_named("usl"));
+  c.dt = std::min(0.5 * stable.crossing, stable.dt());
   return c;
 }
 

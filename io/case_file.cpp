@@ -11,8 +11,8 @@
 #include "core/number_text.hpp"
 #include "core/registry.hpp"
 #include "discretisation/shape_functions.hpp"
-#include "discretisation/stable_time_step.hpp"
 #include "engine/schemes.hpp"
+#include "engine/stable_time_step.hpp"
 #include "engine/take_snapshot.hpp"
 #include "io/case_reader.hpp"
 
@@ -123,8 +123,9 @@ void read_analysis(TableReader t, Case& c) {
   if (t.has("dt") && t.node("dt")->is_string()) {
     t.require(t.string("dt") == "auto", "dt", "a time step in s, or \"auto\"");
     c.dt_auto = true;
+    // Without cfl: 0.8 of the stable limit, at most 0.5 (set with the bodies).
     c.cfl = t.number_or("cfl", 0.5);
-    t.require(c.cfl > 0.0 && c.cfl <= 1.0, "cfl", "a CFL number in (0, 1]");
+    t.require(c.cfl > 0.0, "cfl", "a positive CFL number");
     c.end_time = t.number("end_time");
     t.require(c.end_time > 0.0, "end_time", "a positive end time in s");
     if (t.has("steps")) t.fail("steps", "no steps with dt = \"auto\" (give end_time)");
@@ -344,17 +345,23 @@ Case read_case(const std::filesystem::path& file, const std::vector<std::string>
   }
   t.reject_unknown_keys();
 
-  // The explicit step is stable only below the time a P wave takes to cross
-  // the smallest cell (CFL number 1).
-  const StableStep stable = stable_time_step(c.system);
-  if (c.dt_auto) c.dt = c.cfl * stable.dt;  // the first step's, particles at rest
-  c.system.dt = c.dt;
-  if (c.dt > stable.dt) {
-    TableReader analysis = t.table("analysis");
-    analysis.fail("dt", "a time step no larger than the stable limit h/c = " + readable_text(stable.dt) +
-                            " s (smallest cell over the P-wave speed of material \"" +
-                            stable.material + "\")");
+  // The explicit step is stable only below a fraction of the time a P wave
+  // takes to cross the smallest cell (engine/stable_time_step.hpp).
+  const Scheme& scheme = scheme_named(c.scheme);
+  const StableStep stable = stable_time_step(c.system, scheme);
+  const std::string limit = readable_text(stable.factor) + " h/c = " + readable_text(stable.dt()) + " s for " +
+                            scheme.label + " with " + c.system.shape_function + " shape functions at " +
+                            readable_text(stable.particles_per_cell) + " particles per cell (h/c = " +
+                            readable_text(stable.crossing) +
+                            " s: smallest cell over the P-wave speed of material \"" + stable.material + "\")";
+  TableReader analysis = t.table("analysis");
+  if (c.dt_auto) {
+    if (!analysis.has("cfl")) c.cfl = std::min(0.5, 0.8 * stable.factor);
+    analysis.require(c.cfl <= stable.factor, "cfl", "a CFL number no larger than the stable limit " + limit);
+    c.dt = c.cfl * stable.crossing;  // the first step's, particles at rest
   }
+  c.system.dt = c.dt;
+  if (c.dt > stable.dt()) analysis.fail("dt", "a time step no larger than the stable limit " + limit);
   return c;
 }
 
