@@ -5,7 +5,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(python3 cmake g++ make libtbb-dev libeigen3-dev libhdf5-dev hdf5-tools libspdlog-dev
-          doctest-dev libtomlplusplus-dev libcli11-dev gnuplot-nox)
+          doctest-dev libtomlplusplus-dev libcli11-dev gnuplot-nox libopenmpi-dev openmpi-bin)
 missing=()
 for p in "${packages[@]}"; do
   if [[ $p == python3 ]] && command -v python3 >/dev/null; then continue; fi

@@ -318,6 +318,29 @@ TEST_CASE("shards run the cases whose number is I modulo N, and --collect builds
   CHECK(results_of(dir.path / "shards/sweep.csv") == one);
 }
 
+TEST_CASE("docs/slurm_sweep.sh as the tasks of a job array runs the shards; alone it collects the table") {
+  SweepDir dir;
+  dir.sweep(failing_sweep);
+  REQUIRE(dir.run({"--output", "one"}).status == 2);
+  // Slurm numbers the tasks of --array=3-5 from 3; they are shards 0 to 2.
+  const std::string script = std::string(FLOWMPM_SOURCE_DIR) + "/docs/slurm_sweep.sh";
+  const std::string program = std::string("FLOWMPM=") + FLOWMPM_EXECUTABLE;
+  for (const int task : {3, 4, 5}) {
+    const Result r = wait_for(start_program(
+        {"/bin/bash", script, "sweep.toml", "--output", "array"}, dir.path,
+        {program, "SLURM_ARRAY_TASK_ID=" + std::to_string(task), "SLURM_ARRAY_TASK_MIN=3", "SLURM_ARRAY_TASK_COUNT=3"}));
+    INFO("task " << task << " printed:\n" << r.output);
+    CHECK(contains(r.output, "shard " + std::to_string(task - 3) + "/3"));
+    CHECK(r.status == (task == 5 ? 0 : 2));  // shards 0 and 1 hold the failing cases 003 and 001
+  }
+  const Result collect =
+      wait_for(start_program({"/bin/bash", script, "sweep.toml", "--output", "array"}, dir.path,
+                             {program, "SLURM_ARRAY_TASK_ID=", "SLURM_ARRAY_TASK_COUNT="}));
+  INFO("collecting printed:\n" << collect.output);
+  CHECK(contains(collect.output, "collected 4 of 4 cases: 2 completed, 2 failed (001, 003), 0 missing"));
+  CHECK(results_of(dir.path / "array/sweep.csv") == results_of(dir.path / "one/sweep.csv"));
+}
+
 TEST_CASE("a bad sweep file stops the sweep up front with one message naming the problem, writing nothing") {
   SweepDir dir;
   auto rejected = [&](const std::string& body, std::initializer_list<std::string> fragments) {
