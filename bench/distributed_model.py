@@ -31,10 +31,11 @@ SUM_BYTES, RETURN_BYTES = 7 * 8, 6 * 8
 # Hand-overs of a shared node's running sum per P2G pass with today's colour
 # order (colour = px + 2 py + 4 pz): across a z face 1, across a y face 3.
 HANDOVERS = {"z": 1, "y": 3}
-# Packing and unpacking the halo planes, one core, GB/s of halo bytes
-# (MEASURED: mpirun -n 2 build/bench/bench_mpi_halo --nodes 128 --width 5;
-# the "packing" column over the bytes, for y and z faces).
-PACK_RATE_PER_CORE = 2.6e9
+# Halo bytes packed on one side and unpacked on the other per second, one
+# core (MEASURED: mpirun -n 2 build/bench/bench_mpi_halo --nodes 128
+# --width 5 and --width 7: the bytes over the "packing" column; faces normal
+# to y gave 4.3-7.7 GB/s, to z 6.2-11.8 GB/s; the slowest is taken).
+PACK_UNPACK_RATE_PER_CORE = 4.3e9
 
 # --- a cluster (ASSUMED) -----------------------------------------------------
 CORES_PER_NODE = 64           # two 32-core sockets, one MPI rank per node
@@ -80,7 +81,7 @@ def step_times(particles, ranks, shape, network, width):
     rounds = (3 if p_y > 1 else 1) + 1
     messages = rounds * 2 * 8
     latency = rounds * alpha + messages * MESSAGE_OVERHEAD
-    packing = 2.0 * sent / (PACKING_THREADS * PACK_RATE_PER_CORE)  # pack what goes, unpack what comes
+    packing = sent / (PACKING_THREADS * PACK_UNPACK_RATE_PER_CORE)  # pack what goes, unpack as much
     reduction = math.ceil(math.log2(ranks)) * alpha  # re-sort and failure flags, fastest particle
     return compute, transfer, latency, packing, reduction
 
@@ -91,12 +92,12 @@ def efficiency(particles, ranks, shape, network, width):
 
 
 def main():
-    print(f"node: {CORES_PER_NODE} cores, {MEMORY_BANDWIDTH / 1e9:.0f} GB/s; node rate linear "
-          f"{node_rate('linear') / 1e6:.0f} M, bspline2 {node_rate('bspline2') / 1e6:.0f} M particle-steps/s\n")
+    print(f"A machine: {CORES_PER_NODE} cores, {MEMORY_BANDWIDTH / 1e9:.0f} GB/s; its step rate linear "
+          f"{node_rate('linear') / 1e6:.0f} M, bspline2 {node_rate('bspline2') / 1e6:.0f} M particle-steps/s.\n")
     for name, network in NETWORKS.items():
-        print(f"### {name}: alpha = {network[0] * 1e6:g} us, beta = {network[1] / 1e9:g} GB/s\n")
-        print("| particles | nodes (P_y x P_z) | shape | step compute (ms) | halo bytes sent per rank (MB) | "
-              "communication (ms) | efficiency, W = reach | efficiency, W = B |")
+        print(f"**{name}**: alpha = {network[0] * 1e6:g} us, beta = {network[1] / 1e9:g} GB/s\n")
+        print("| particles | nodes (P_y x P_z) | shape | step compute (ms) | halo sent per rank, W = B (MB) | "
+              "communication, W = B (ms) | efficiency, W = reach | efficiency, W = B |")
         print("|---|---|---|---|---|---|---|---|")
         for particles in (1e8, 1e9):
             for ranks in (8, 16, 32, 64):

@@ -1,8 +1,8 @@
 // What MPI costs on this machine, for the performance model of a domain
 // decomposition (docs/DISTRIBUTED.md), measured between ranks 0 and 1:
 //   1. ping-pong: half the round trip of one message, 8 B to 64 MiB; the
-//      latency is the 8 B time, the bandwidth the largest message's bytes
-//      over its time;
+//      latency is the 8 B time, the bandwidth the highest bytes over time
+//      of any size (each the fastest of many round trips);
 //   2. MPI_Allreduce (max) of 2 doubles: the per-step reduction of the
 //      re-sort and failure flags and the fastest particle;
 //   3. the halo of the particle-to-grid sum across one face of a rank's box
@@ -12,8 +12,9 @@
 //      the 6 fields of the grid update (velocity and its change) packed by
 //      rank 1, sent back and copied into rank 0's planes. For faces normal
 //      to x (W doubles contiguous), y (W L) and z (W L^2). It reports the
-//      measured exchange, the packing alone, and the model's prediction
-//      (2 latencies + bytes / bandwidth + packing).
+//      measured exchange, the packing alone, and the model's prediction:
+//      the two messages of these sizes timed alone (ping-pong) plus the
+//      packing.
 // The fastest of --repeats timings. Built only with MPI (FLOWMPM_MPI).
 //
 //   mpirun -n 2 build/bench/bench_mpi_halo [--nodes L] [--width W] [--repeats R]
@@ -37,26 +38,25 @@ namespace {
 // the one least disturbed by the rest of its load.
 double fastest(const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()); }
 
-// Half the round trip of a `bytes` message between ranks 0 and 1 (s).
+// Half the round trip of a `bytes` message between ranks 0 and 1 (s): the
+// fastest of many round trips, each timed alone.
 double ping_pong(int rank, std::size_t bytes, int repeats) {
   std::vector<char> buffer(std::max<std::size_t>(bytes, 1));
   const int count = static_cast<int>(bytes);
-  // Enough round trips for about 20 ms per timing (at least 3).
-  const int trips = std::max(3, static_cast<int>(2e-2 / (2e-6 + static_cast<double>(bytes) / 5e9)));
+  // About 0.2 s per size, at least `repeats` round trips.
+  const int trips = std::max(repeats, static_cast<int>(0.2 / (2e-6 + static_cast<double>(bytes) / 2e9)));
   std::vector<double> times;
-  for (int r = 0; r < repeats; ++r) {
+  for (int t = 0; t < trips; ++t) {
     MPI_Barrier(MPI_COMM_WORLD);
     const auto start = Clock::now();
-    for (int t = 0; t < trips; ++t) {
-      if (rank == 0) {
-        MPI_Send(buffer.data(), count, MPI_CHAR, 1, 0, MPI_COMM_WORLD);
-        MPI_Recv(buffer.data(), count, MPI_CHAR, 1, 0, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-      } else if (rank == 1) {
-        MPI_Recv(buffer.data(), count, MPI_CHAR, 0, 0, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-        MPI_Send(buffer.data(), count, MPI_CHAR, 0, 0, MPI_COMM_WORLD);
-      }
+    if (rank == 0) {
+      MPI_Send(buffer.data(), count, MPI_CHAR, 1, 0, MPI_COMM_WORLD);
+      MPI_Recv(buffer.data(), count, MPI_CHAR, 1, 0, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    } else if (rank == 1) {
+      MPI_Recv(buffer.data(), count, MPI_CHAR, 0, 0, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      MPI_Send(buffer.data(), count, MPI_CHAR, 0, 0, MPI_COMM_WORLD);
     }
-    times.push_back(std::chrono::duration<double>(Clock::now() - start).count() / (2.0 * trips));
+    times.push_back(std::chrono::duration<double>(Clock::now() - start).count() / 2.0);
   }
   return fastest(times);
 }
@@ -163,7 +163,11 @@ int main(int argc, char** argv) {
   std::vector<double> one_way;
   for (std::size_t bytes : sizes) one_way.push_back(ping_pong(rank, bytes, repeats));
   const double latency = one_way.front();
-  const double bandwidth = static_cast<double>(sizes.back()) / one_way.back();
+  std::size_t best = 0;  // the size with the highest bandwidth
+  for (std::size_t i = 0; i < sizes.size(); ++i) {
+    if (static_cast<double>(sizes[i]) / one_way[i] > static_cast<double>(sizes[best]) / one_way[best]) best = i;
+  }
+  const double bandwidth = static_cast<double>(sizes[best]) / one_way[best];
   // 2. Allreduce.
   const double reduce = allreduce_time(repeats);
   if (rank == 0) {
@@ -172,8 +176,9 @@ int main(int argc, char** argv) {
     for (std::size_t i = 0; i < sizes.size(); ++i) {
       std::printf("| %zu | %.2f | %.2f |\n", sizes[i], one_way[i] * 1e6, static_cast<double>(sizes[i]) / one_way[i] / 1e9);
     }
-    std::printf("\nlatency alpha = %.2f us, bandwidth beta = %.2f GB/s; MPI_Allreduce of 2 doubles: %.2f us\n\n",
-                latency * 1e6, bandwidth / 1e9, reduce * 1e6);
+    std::printf("\nlatency alpha = %.2f us, bandwidth beta = %.2f GB/s (at %zu bytes); MPI_Allreduce of 2 doubles: "
+                "%.2f us\n\n",
+                latency * 1e6, bandwidth / 1e9, sizes[best], reduce * 1e6);
   }
 
   // 3. The P2G halo across one face.
@@ -199,7 +204,7 @@ int main(int argc, char** argv) {
   if (rank == 0) {
     std::printf("P2G halo across one face of a box of %d^3 nodes, %d node planes: 7 fields there, 6 back\n\n", L, W);
     std::printf("| face normal to | nodes | bytes there + back | packing, both ways (ms) | exchange measured (ms) | "
-                "model: 2 alpha + bytes / beta + packing (ms) |\n|---|---|---|---|---|---|\n");
+                "model: the two messages alone + packing (ms) |\n|---|---|---|---|---|---|\n");
   }
   const char* axis_names = "xyz";
   for (int axis = 0; axis < 3; ++axis) {
@@ -234,7 +239,9 @@ int main(int argc, char** argv) {
     }
     const double bytes = 13.0 * 8.0 * static_cast<double>(nodes);
     const double packing = fastest(pack_times);
-    const double model = 2.0 * latency + bytes / bandwidth + packing;
+    // The model: two messages of these sizes, timed alone, and the packing.
+    const double model = ping_pong(rank, there.size() * sizeof(double), repeats) +
+                         ping_pong(rank, back.size() * sizeof(double), repeats) + packing;
     if (rank == 0) {
       std::printf("| %c | %zu | %.0f | %.3f | %.3f | %.3f |\n", axis_names[axis], nodes, bytes, packing * 1e3,
                   fastest(exchange_times) * 1e3, model * 1e3);
