@@ -15,17 +15,10 @@ namespace flowmpm {
 
 std::shared_ptr<spdlog::logger> sweep_logger() { return spdlog::default_logger()->clone("sweep"); }
 
-CaseLogLevel::CaseLogLevel(spdlog::level::level_enum level) : saved_(spdlog::default_logger()->level()) {
-  spdlog::default_logger()->set_level(level);
-}
-
-CaseLogLevel::~CaseLogLevel() { spdlog::default_logger()->set_level(saved_); }
-
 SweepSummary run_sweep(const Sweep& sweep, const SweepOptions& options) {
-  // The sweep's own logger, at the level set for the program; the cases
-  // log through the default logger, at warn while the sweep runs.
+  // The sweep logs its progress at the level set for the program; the
+  // cases log to their own run.log only.
   const auto log = sweep_logger();
-  const CaseLogLevel quiet_cases(std::max(spdlog::level::warn, log->level()));
   const auto interrupted = [&] { return options.interrupt && options.interrupt->load(); };
 
   SweepTable table(sweep, options.shard, log);

@@ -26,10 +26,9 @@ struct SweepOptions {
 };
 
 // Runs every case of the shard not already completed. The sweep logs its
-// progress at the level the default logger has on entry; while it runs, the
-// cases log warnings and errors only. A failed case is recorded and the
-// others go on. Throws std::runtime_error if sweep.csv or a sweep_row.txt
-// cannot be written.
+// progress at the level the default logger has; each case logs to its
+// run.log only. A failed case is recorded and the others go on. Throws
+// std::runtime_error if sweep.csv or a sweep_row.txt cannot be written.
 SweepSummary run_sweep(const Sweep& sweep, const SweepOptions& options);
 
 // Builds sweep.csv from the rows in cases/*/sweep_row.txt that belong to
@@ -39,17 +38,5 @@ SweepSummary collect_sweep(const Sweep& sweep);
 
 // The sweep's own logger ("sweep"), at the level the default logger has.
 std::shared_ptr<spdlog::logger> sweep_logger();
-
-// Sets the default logger's level (that of the cases) for its lifetime.
-class CaseLogLevel {
- public:
-  explicit CaseLogLevel(spdlog::level::level_enum level);
-  CaseLogLevel(const CaseLogLevel&) = delete;
-  CaseLogLevel& operator=(const CaseLogLevel&) = delete;
-  ~CaseLogLevel();
-
- private:
-  spdlog::level::level_enum saved_;
-};
 
 }  // namespace flowmpm

@@ -185,10 +185,9 @@ MpiSession::MpiSession(int& argc, char**& argv) {
 MpiSession::~MpiSession() { MPI_Finalize(); }
 
 SweepSummary run_sweep_mpi(const Sweep& sweep, const SweepOptions& options, const MpiSession& mpi) {
-  // The cases log warnings and errors only, as in a local sweep; a worker's
-  // lines name its rank.
+  // The cases log to their own run.log only, as in a local sweep; a
+  // worker's own lines (errors) name its rank.
   const auto log = sweep_logger();
-  const CaseLogLevel quiet_cases(std::max(spdlog::level::warn, log->level()));
   if (mpi.rank() == 0) return coordinate(sweep, options, mpi, log);
   spdlog::set_pattern("[%H:%M:%S.%e] [rank " + std::to_string(mpi.rank()) + "] %^%l%$ %v");
   work(sweep, options, mpi);

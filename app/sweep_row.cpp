@@ -102,6 +102,7 @@ std::optional<SweepRow> run_sweep_case(const Sweep& sweep, std::size_t i, tbb::t
   c.output.directory = case_directory(sweep, i);
   RunOptions options;
   options.threads = threads;
+  options.log_to_console = false;  // the case logs to its run.log
   options.interrupt = interrupt;
   SweepRow row;
   row.rank = rank;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <CLI/CLI.hpp>
+#include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 #include <tbb/global_control.h>
 #include <tbb/info.h>
@@ -211,6 +212,9 @@ int sweep(const Arguments& args, int threads, int& argc, char**& argv) {
 
 int main(int argc, char** argv) {
   const Arguments args = parse(argc, argv);
+  // The log (progress, warnings, errors) goes to stderr; stdout carries only
+  // what a command prints as its result ("check": CASE: ok).
+  spdlog::set_default_logger(spdlog::stderr_color_mt("flowmpm"));
   spdlog::set_pattern("[%H:%M:%S.%e] %^%l%$ %v");
   if (args.quiet) spdlog::set_level(spdlog::level::warn);
 
@@ -231,7 +235,6 @@ int main(int argc, char** argv) {
     }
     c = flowmpm::read_case(args.case_file, args.overrides);
     if (!args.output.empty()) c.output.directory = args.output;
-    spdlog::info("case '{}' read from {}", c.name, args.case_file);
     if (args.command == "check") {
       flowmpm::describe_case(c);
       std::cout << args.case_file << ": ok\n";
@@ -247,32 +250,12 @@ int main(int argc, char** argv) {
   options.interrupt = &interrupted;
   options.setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - read_start).count();
   try {
-    spdlog::info("running on {} thread{}, output in {}", threads, threads == 1 ? "" : "s",
-                 c.output.directory.string());
-    const flowmpm::RunSummary s = flowmpm::run_case(c, options);
-    spdlog::info("done: {} steps, {} particles, {:.3f} s in the step loop, {:.4g} particle-steps/s "
-                 "(set-up {:.3f} s, output {:.3f} s)",
-                 s.steps, s.particles, s.step_loop_seconds, s.particle_steps_per_second, s.setup_seconds,
-                 s.output_seconds);
-    for (const auto& b : s.bodies) {
-      spdlog::info("body '{}' at t = {} s: mean stress xx {:.6g} yy {:.6g} zz {:.6g} Pa, "
-                   "mean strain xx {:.6g} yy {:.6g} zz {:.6g}",
-                   b.name, c.end_time, b.mean_stress[0], b.mean_stress[1], b.mean_stress[2], b.mean_strain[0],
-                   b.mean_strain[1], b.mean_strain[2]);
-    }
-    if (s.energy_initial > 0.0) {
-      spdlog::info("energy (kinetic + strain): {:.6g} J at the start, {:.6g} J at the end, drift {:+.3g} %",
-                   s.energy_initial, s.energy_final, 100.0 * s.energy_drift());
-    }
-    for (const auto& [name, value] : s.errors) {
-      spdlog::info("error against the {} reference: {} = {:.4g}", c.reference->type(), name, value);
-    }
+    flowmpm::run_case(c, options);
   } catch (const flowmpm::CaseError& e) {
     spdlog::error("{}", e.what());
     return 1;
-  } catch (const flowmpm::SimulationError& e) {
-    spdlog::error("{}", e.what());
-    return interrupted ? 130 : 2;
+  } catch (const flowmpm::SimulationError&) {
+    return interrupted ? 130 : 2;  // run_case logged it
   } catch (const std::exception& e) {
     spdlog::error("{}", e.what());
     return 2;

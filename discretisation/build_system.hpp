@@ -6,6 +6,7 @@
 // can tell (a body in the outermost cells, a node set with no node).
 #pragma once
 #include <cmath>
+#include <numeric>
 #include <numbers>
 #include <type_traits>
 
@@ -131,6 +132,13 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
     lightest = std::min(lightest, rho * volume);
     system.batches.push_back(std::move(batch));
   }
+  // Particle ids in the order the particles were made: their rows in the output.
+  std::uint32_t next_id = 0;
+  for (auto& batch : system.batches) {
+    batch.id.resize(batch.size());
+    std::iota(batch.id.begin(), batch.id.end(), next_id);
+    next_id += static_cast<std::uint32_t>(batch.size());
+  }
   // A node holding less than a millionth of the lightest particle's mass
   // only sees the far tail of a shape function: its v = p / m is noise.
   system.mass_threshold = 1e-6 * lightest;
@@ -158,7 +166,11 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
       if (set.velocity[d]) system.constraints.push_back({set.name, nodes, d, *set.velocity[d]});
     }
     auto pairs = ghost_mirror_pairs<D, Shape>(system, set, nodes);
-    if (!pairs.empty()) system.mirror_planes.push_back({set.name, std::move(pairs), set.velocity});
+    if (!pairs.empty()) {
+      for (NodeConstraint& k : system.constraints)
+        if (k.name == set.name) k.mirror_plane = static_cast<int>(system.mirror_planes.size());
+      system.mirror_planes.push_back({set.name, std::move(pairs), set.velocity});
+    }
   }
 
   // Every particle must start where its stencil has grid nodes.

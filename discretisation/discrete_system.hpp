@@ -18,12 +18,17 @@
 
 namespace flowmpm {
 
-// Prescribed velocity of one axis on a set of nodes.
+// Prescribed velocity of one axis on a set of nodes, and the reaction: the
+// force the constraint applied on the body along that axis in the last
+// step (N; per unit thickness in 2D, N/m, and per unit cross-section in 1D,
+// N/m^2).
 struct NodeConstraint {
   std::string name;
   std::vector<std::size_t> nodes;
   int axis = 0;
   TimeFunction velocity;  // m/s
+  int mirror_plane = -1;  // index into mirror_planes when the set is one
+  double reaction = 0.0;
 };
 
 // A constrained plane at the edge of the material, for shape functions that

@@ -13,7 +13,7 @@
 #include "discretisation/shape_functions.hpp"
 #include "discretisation/stable_time_step.hpp"
 #include "engine/schemes.hpp"
-#include "engine/snapshot.hpp"
+#include "engine/take_snapshot.hpp"
 #include "io/case_reader.hpp"
 
 namespace flowmpm {
@@ -258,10 +258,16 @@ void read_output(TableReader t, Case& c) {
   c.output.every = t.integer_or("every", 0);
   t.require(c.output.every >= 0, "every", "a number of steps >= 0 (0: about 20 over the run)");
   if (t.has("fields")) {
-    const std::vector<std::string> known = output_field_names();
+    // The built-in fields and the state variables of the case's models.
+    std::vector<Material> materials;
+    for (const NamedMaterial& m : c.system.materials) materials.push_back(m.model);
+    std::vector<std::string> known;
+    for (const OutputField& f : output_fields_of(materials)) known.emplace_back(f.name);
     c.output.fields = t.strings("fields");
     for (const std::string& name : c.output.fields) {
-      if (std::ranges::find(known, name) == known.end()) t.fail("fields", "field names among " + quoted_list(known));
+      if (std::ranges::find(known, name) == known.end()) {
+        t.fail("fields", "field names among " + quoted_list(known) + " (\"" + name + "\" is none of them)");
+      }
     }
     // The XDMF geometry needs the positions.
     if (std::ranges::find(c.output.fields, "position") == c.output.fields.end()) c.output.fields.push_back("position");
@@ -323,8 +329,11 @@ Case read_case(const std::filesystem::path& file, const std::vector<std::string>
     c.system.keep_initial_positions = true;
   }
   c.output.directory = "results/" + c.name;
-  c.output.fields = output_field_names();
+  c.output.fields = default_output_fields();
   if (t.has("output")) read_output(t.table("output"), c);
+  for (const char* needs_x0 : {"displacement", "initial_position"}) {
+    if (std::ranges::find(c.output.fields, needs_x0) != c.output.fields.end()) c.system.keep_initial_positions = true;
+  }
   t.reject_unknown_keys();
 
   // The explicit step is stable only below the time a P wave takes to cross

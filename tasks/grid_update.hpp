@@ -1,8 +1,9 @@
 // Grid stages (README "How a step runs"). grid_velocity: v_I = p_I / m_I where m_I is above
 // the mass threshold, then the prescribed velocities (p_I follows).
-// grid_integrate: p_I += f_I dt, v_I^new = p_I / m_I, prescribed velocities
-// at t + dt, and dv_I = v_I^new - v_I for the FLIP update; v_I becomes
-// v_I^new so that the stages after it read the updated velocity.
+// grid_integrate: p_I += f_I dt, v_I^new = p_I / m_I, the constraints'
+// reactions, prescribed velocities at t + dt, and dv_I = v_I^new - v_I for
+// the FLIP update; v_I becomes v_I^new so that the stages after it read the
+// updated velocity.
 #pragma once
 #include "tasks/parallel_blocks.hpp"
 
@@ -45,6 +46,39 @@ void fold_mirror_planes(DiscreteSystem<D, Shape>& system, typename Grid<D>::Vect
   }
 }
 
+// The reaction of each constraint over the step: the impulse the body's
+// particles receive at a node beyond its own forces, m_I dv_I - f_I dt
+// (the particles' momentum changes by sum_I m_I dv_I in the FLIP update and
+// by sum_I f_I dt where nothing is prescribed), summed over the set's nodes
+// and divided by dt; = -sum_I f_I for a fixed support. Where the set is a
+// mirror plane, its ghost nodes and the mirror nodes count too, with the
+// mass and force the body's particles put there (the folded image's share
+// taken off), so that the reactions of all sets add up to the total external
+// force of the supports. A node in two sets counts in both; at a corner of
+// two mirror planes the image shares are approximate. Serial over the
+// constrained nodes, in their order: deterministic.
+template <int D, class Shape>
+void measure_reactions(DiscreteSystem<D, Shape>& system) {
+  const auto& grid = system.grid;
+  const double dt = system.dt;
+  for (NodeConstraint& c : system.constraints) {
+    const int a = c.axis;
+    const auto impulse = [&](std::size_t n, double mass, double force) {
+      return mass * grid.velocity_change[a][n] - force * dt;
+    };
+    double J = 0.0;
+    for (std::size_t n : c.nodes) J += impulse(n, grid.mass[n], grid.force[a][n]);
+    if (c.mirror_plane >= 0) {
+      // Along a constrained axis the fold is antisymmetric: f_mirror += -f_ghost.
+      for (auto [ghost, mirror] : system.mirror_planes[c.mirror_plane].pairs) {
+        J += impulse(ghost, grid.mass[ghost], grid.force[a][ghost]);
+        J += impulse(mirror, grid.mass[mirror] - grid.mass[ghost], grid.force[a][mirror] + grid.force[a][ghost]);
+      }
+    }
+    c.reaction = J / dt;
+  }
+}
+
 template <int D, class Shape>
 void grid_velocity(DiscreteSystem<D, Shape>& system) {
   auto& grid = system.grid;
@@ -78,6 +112,7 @@ void grid_integrate(DiscreteSystem<D, Shape>& system) {
   for_each_active_node(grid, [&](std::size_t n, const Index<D>&) {
     for (int d = 0; d < D; ++d) grid.velocity_change[d][n] = grid.velocity[d][n] - grid.velocity_change[d][n];
   });
+  measure_reactions(system);
 }
 
 }  // namespace flowmpm
