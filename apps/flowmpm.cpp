@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,9 @@
 
 #include "app/run_case.hpp"
 #include "app/run_sweep.hpp"
+#ifdef FLOWMPM_MPI
+#include "app/run_sweep_mpi.hpp"
+#endif
 #include "core/errors.hpp"
 #include "io/sweep_file.hpp"
 
@@ -29,12 +33,38 @@ struct Arguments {
   int threads = 0;  // 0: all cores
   int jobs = 1;
   bool quiet = false;
+  bool mpi = false, collect = false;
+  flowmpm::SweepShard shard;
   std::vector<std::string> overrides;
 };
 
 [[noreturn]] void bad_usage(const std::string& message) {
   std::cerr << "flowmpm: " << message << "\n(see flowmpm --help)\n";
   std::exit(1);
+}
+
+// --shard I/N: the cases whose number is I modulo N.
+std::string read_shard(const std::string& text, flowmpm::SweepShard& shard) {
+  const auto slash = text.find('/');
+  const auto whole = [](const std::string& part, std::size_t& value) {
+    if (part.empty() || part.size() > 9 || part.find_first_not_of("0123456789") != std::string::npos) return false;
+    value = std::stoul(part);
+    return true;
+  };
+  if (slash == std::string::npos || !whole(text.substr(0, slash), shard.index) ||
+      !whole(text.substr(slash + 1), shard.count) || shard.count == 0 || shard.index >= shard.count) {
+    return "expected I/N, whole numbers with 0 <= I < N (the cases whose number is I modulo N), got " + text;
+  }
+  return {};
+}
+
+// The processes an MPI launcher started this one with (1 if none): mpirun
+// of Open MPI, or of MPICH and Intel MPI (Hydra).
+int launched_processes() {
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"}) {
+    if (const char* value = std::getenv(name)) return std::max(1, std::atoi(value));
+  }
+  return 1;
 }
 
 // Parses the command line (CLI11): one command, each with its own options
@@ -78,11 +108,32 @@ Arguments parse(int argc, char** argv) {
       "run every case of a sweep file (a base case and the keys to vary); writes sweep.csv and each case's "
       "results in cases/NNN/; running it again skips the cases already completed");
   sweep->add_option("sweep", a.case_file, "the sweep file (TOML)")->type_name("SWEEP.toml");
-  sweep->add_option("--jobs", a.jobs, "cases run side by side (default 1); the threads are split between them")
-      ->check(CLI::Range(1, 1024));
+  CLI::Option* jobs =
+      sweep->add_option("--jobs", a.jobs, "cases run side by side (default 1); the threads are split between them")
+          ->check(CLI::Range(1, 1024));
   threads(sweep);
   sweep->add_option("--output", a.output, "output directory (overrides the sweep file's output)");
   quiet(sweep);
+  CLI::Option* mpi = sweep->add_flag(
+      "--mpi", a.mpi,
+      "run the cases over the ranks of an MPI job (mpirun -n R flowmpm sweep SWEEP.toml --mpi): each rank runs one "
+      "case at a time on its --threads; rank 0 writes sweep.csv");
+  CLI::Option* shard =
+      sweep
+          ->add_option_function<std::string>(
+              "--shard",
+              [&](const std::string& text) {
+                if (const std::string problem = read_shard(text, a.shard); !problem.empty()) {
+                  throw CLI::ValidationError("--shard", problem);
+                }
+              },
+              "run only the cases whose number is I modulo N (one job of a scheduler's job array); writes their "
+              "folders and no sweep.csv")
+          ->type_name("I/N");
+  CLI::Option* collect = sweep->add_flag(
+      "--collect", a.collect, "run nothing: build sweep.csv from the cases' folders (after the shards have run)");
+  mpi->excludes(shard)->excludes(jobs);
+  collect->excludes(mpi)->excludes(shard)->excludes(jobs);
 
   try {
     app.parse(argc, argv);
@@ -99,27 +150,58 @@ Arguments parse(int argc, char** argv) {
   if (chosen.empty()) bad_usage("no command given: run, check or sweep");
   a.command = chosen.front()->get_name();
   if (a.case_file.empty()) bad_usage(a.command + ": no " + (a.command == "sweep" ? "sweep" : "case") + " file given");
+#ifndef FLOWMPM_MPI
+  if (a.mpi) bad_usage("--mpi: this flowmpm was built without MPI (install libopenmpi-dev and build again)");
+#endif
+  const int processes = launched_processes();
+  if (processes > 1 && !a.mpi && a.command != "check") {
+    bad_usage("started by an MPI launcher as " + std::to_string(processes) + " processes, each of which would run " +
+              (a.command == "sweep" ? "the whole sweep; add --mpi to share the cases out"
+                                    : "the whole case; run a case as one process"));
+  }
   return a;
 }
 
-// flowmpm sweep: reads and checks the whole sweep, then runs it.
-int sweep(const Arguments& args, int threads) {
+// flowmpm sweep: reads and checks the whole sweep, then runs it (on
+// threads, on MPI ranks or as a shard) or collects its table.
+int sweep(const Arguments& args, int threads, int& argc, char**& argv) {
+  bool root = true;  // the process that reports
+#ifdef FLOWMPM_MPI
+  std::optional<flowmpm::MpiSession> mpi;
+  if (args.mpi) {
+    mpi.emplace(argc, argv);
+    root = mpi->rank() == 0;
+  }
+#else
+  (void)argc;
+  (void)argv;
+#endif
   flowmpm::Sweep s;
   try {
     s = flowmpm::read_sweep(args.case_file);
   } catch (const flowmpm::CaseError& e) {
-    spdlog::error("{}", e.what());
+    if (root) spdlog::error("{}", e.what());
     return 1;
   }
   if (!args.output.empty()) s.output = args.output;
   flowmpm::SweepOptions options;
   options.jobs = args.jobs;
   options.threads = threads;
+  options.shard = args.shard;
   options.interrupt = &interrupted;
   try {
-    const flowmpm::SweepSummary summary = flowmpm::run_sweep(s, options);
+    flowmpm::SweepSummary summary;
+    if (args.collect) {
+      summary = flowmpm::collect_sweep(s);
+#ifdef FLOWMPM_MPI
+    } else if (mpi) {
+      summary = flowmpm::run_sweep_mpi(s, options, *mpi);
+#endif
+    } else {
+      summary = flowmpm::run_sweep(s, options);
+    }
     if (summary.interrupted) return 130;
-    return summary.failed > 0 ? 2 : 0;
+    return summary.failed > 0 || summary.missing > 0 ? 2 : 0;
   } catch (const std::exception& e) {
     spdlog::error("{}", e.what());
     return 2;
@@ -143,7 +225,7 @@ int main(int argc, char** argv) {
   // Ctrl-C or a termination request: finish the current step, keep results.
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
-  if (args.command == "sweep") return sweep(args, threads);
+  if (args.command == "sweep") return sweep(args, threads, argc, argv);
 
   flowmpm::Case c;
   const auto read_start = std::chrono::steady_clock::now();
