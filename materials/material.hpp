@@ -10,7 +10,12 @@
 //                                                    // recoverable energy per unit volume (J/m^3)
 //   double density() const;                          // kg/m^3
 //   double wave_speed() const;                       // fastest wave, m/s (stable dt)
-// and optionally named state variables for output (materials/state_variable.hpp).
+// and optionally
+//   named state variables for output (materials/state_variable.hpp);
+//   double dissipated_energy(const State&) const;    // J/m^3 dissipated so far (plastic work, damage)
+//   double expansion_work(const State&, const Voigt& sigma, const MaterialInput&) const;
+//                                                    // J/m^3 done on the body: -sigma : d eps_expansion
+// for the energy balance (engine/energy_balance.hpp).
 // `update` is pure apart from its outputs: stress, state, and for reduced
 // stress states the out-of-plane strain components of deps. The engine
 // dispatches on this variant once per particle batch, never per particle.
