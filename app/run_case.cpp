@@ -233,15 +233,15 @@ RunSummary run(const Case& c, const RunOptions& options) {
   double total_mass = 0.0;
   for (const auto& b : system.batches)
     for (const double m : b.mass) total_mass += m;
-  const EnergyBudget budget{initial.kinetic_energy + initial.stored_energy + initial.dissipated_energy,
-                            0.5 * total_mass * (1e-6 * c_max) * (1e-6 * c_max), c.guard_energy_factor};
+  EnergyBudget budget(initial.kinetic_energy + initial.stored_energy + initial.dissipated_energy,
+                      0.5 * total_mass * (1e-6 * c_max) * (1e-6 * c_max), c.guard_energy_factor);
   auto check_guard = [&] {
     const double limit = budget.limit(system.work);
     if (system.kinetic_energy > limit) {
       throw SimulationError(fmt::format(
           "blow-up at step {} (t = {:.6g} s): the kinetic energy, {:.4g} J, is more than {:g} times the initial "
-          "energy plus the work done on the bodies, {:.4g} J (analysis.guard_energy_factor); the fastest: {}",
-          system.step, system.t, system.kinetic_energy, budget.factor, limit / budget.factor,
+          "energy plus the most work done on the bodies, {:.4g} J (analysis.guard_energy_factor); the fastest: {}",
+          system.step, system.t, system.kinetic_energy, budget.factor(), limit / budget.factor(),
           sim.fastest_particle(body_names)));
     }
     if (system.max_speed_sq <= speed_limit * speed_limit) return;
@@ -261,7 +261,7 @@ RunSummary run(const Case& c, const RunOptions& options) {
   };
   // What may run a case that broke down (docs/STABILITY.md).
   std::string remedy = "; a smaller time step may run it (analysis.dt, or analysis.cfl with dt = \"auto\")";
-  if (Shape::gradient_jumps && scheme.stress_from_updated_grid)
+  if (Shape::gradient_jumps && scheme.wiring.stress_from_updated_grid())
     remedy += ", or scheme = \"musl\", or shape_function = \"gimp\" or \"bspline2\": linear shape functions "
               "with USL are the least stable pair where the material's edge moves (docs/STABILITY.md)";
   auto done = [&] { return c.dt_auto ? system.t >= c.end_time * (1.0 - 1e-12) : system.step >= c.steps; };

@@ -10,6 +10,7 @@
 // The per-step sums come from the particles' blocks, added in block order:
 // the same at any thread count.
 #pragma once
+#include <algorithm>
 #include <cmath>
 
 #include "discretisation/discrete_system.hpp"
@@ -34,17 +35,28 @@ void add_step_energy(DiscreteSystem<D, Shape>& system) {
 }
 
 // The blow-up guard's budget: a run cannot have more kinetic energy than
-// its initial energy plus what was done on it. `factor` times that (plus a
-// floor for bodies at rest: all particles at 1e-6 of the fastest wave speed)
-// is the most the guard lets pass.
-struct EnergyBudget {
-  double initial = 0.0;  // kinetic + stored + dissipated at the start (J)
-  double floor = 0.0;    // J
-  double factor = 2.0;
+// its initial energy plus what was done on it at some time (the largest so
+// far: a column oscillating under gravity gives back gravity's work each
+// period). `factor` times that, plus a floor for bodies at rest (all
+// particles at 1e-6 of the fastest wave speed), is the most the guard lets
+// pass.
+class EnergyBudget {
+ public:
+  EnergyBudget(double initial, double floor, double factor)
+      : initial_(initial), largest_(initial), floor_(floor), factor_(factor) {}
 
-  double limit(const WorkDone& w) const {
-    return factor * (initial + std::abs(w.gravity) + std::abs(w.boundary) + std::abs(w.expansion) + floor);
+  // The most kinetic energy allowed after a step with the work `w` done so far.
+  double limit(const WorkDone& w) {
+    largest_ = std::max(largest_, initial_ + std::abs(w.gravity) + std::abs(w.boundary) + std::abs(w.expansion));
+    return factor_ * (largest_ + floor_);
   }
+  double factor() const { return factor_; }
+
+ private:
+  double initial_;  // kinetic + stored + dissipated at the start (J)
+  double largest_;  // the largest initial energy plus work done so far (J)
+  double floor_;    // J
+  double factor_;
 };
 
 }  // namespace flowmpm

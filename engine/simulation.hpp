@@ -31,6 +31,10 @@ class Simulation {
       : fixed_dt_(fixed_dt), observer_(std::move(observer)), graph_(wiring, [this](int node) { run_node(node); }) {
     for (const StageGroup& group : wiring.nodes) passes_.push_back(stage_pass<D, Shape>(group));
     build_system(spec, system_);
+    // Nodes too light for their stiffness are held only where the stress
+    // update sees the updated grid velocity (tasks/grid_update.hpp held_node).
+    if constexpr (Shape::gradient_jumps)
+      if (wiring.stress_from_updated_grid()) system_.grid.stiffness.assign(system_.grid.node_count(), 0.0);
   }
 
   // One step through the flow graph (or serially, as the reference).

@@ -41,7 +41,9 @@ inline StableStep stable_time_step(const SystemSpec& spec, const Scheme& scheme)
       s.particles_per_cell = std::max(s.particles_per_cell, spec.grid.cell_size[d] / body.spacing[d]);
   const int i = std::clamp(static_cast<int>(std::ceil(s.particles_per_cell - 1e-9)), 1, 4) - 1;
   s.factor = stability_margin * with_shape_function(spec.shape_function, [&]<class Shape>() {
-               return scheme.stress_from_updated_grid ? Shape::stable_factor_usl[i] : Shape::stable_factor_remapped[i];
+               return scheme.wiring.stress_from_updated_grid()
+                        ? Shape::stable_factor_usl[i]
+                        : Shape::stable_factor_remapped[i];
              });
   // Beyond 4 per cell, the trend of uGIMP's USL limit at a free surface
   // (|dN|^2 / N grows with the particles per cell); conservative for the others.

@@ -23,6 +23,18 @@ std::vector<int> Wiring::topological_order() const {
   return order;
 }
 
+bool Wiring::stress_from_updated_grid() const {
+  bool updated = false;
+  for (int node : topological_order()) {
+    for (Stage stage : nodes[node]) {
+      if (stage == Stage::g2p_stress) return updated;
+      if (stage == Stage::grid_integrate) updated = true;
+      if (stage == Stage::grid_velocity) updated = false;
+    }
+  }
+  return false;
+}
+
 std::string Wiring::describe() const {
   // The stages that start the step run side by side ("+"), the rest follow ("->").
   std::vector<bool> has_predecessor(nodes.size(), false);

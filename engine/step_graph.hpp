@@ -23,6 +23,10 @@ struct Wiring {
   std::vector<std::pair<int, int>> edges;   // (from, to) node indices
   // Node indices in an order that respects every edge (the serial step).
   std::vector<int> topological_order() const;
+  // Whether the stress update takes the grid velocity after its update
+  // (USL: grid_integrate is the last grid stage before g2p_stress), not one
+  // mapped from the particles (USF, MUSL: grid_velocity is).
+  bool stress_from_updated_grid() const;
   // Human-readable: "p2g_momentum & p2g_force -> grid_velocity -> ...",
   // with "+" between nodes that start the step side by side.
   std::string describe() const;

@@ -95,7 +95,8 @@ void grid_velocity(DiscreteSystem<D, Shape>& system) {
 
 // A node too light for its stiffness: its own frequency sqrt(k_I / m_I),
 // k_I = sum_p V_p M_p |grad N_Ip|^2 (M the P-wave modulus), exceeds 1 / dt.
-// Only linear shape functions make such nodes: where a particle's weight
+// Only linear shape functions make such nodes, and only USL needs them
+// held (the grid keeps their stiffness only then): where a particle's weight
 // N_Ip on a node vanishes, its gradient does not (at the material's moving
 // edge), and v_I + f_I dt / m_I would throw the stress update (USL) and the
 // positions off by (c dt / h)^2 / N_Ip times the strain in one step
@@ -105,7 +106,8 @@ void grid_velocity(DiscreteSystem<D, Shape>& system) {
 // is bounded), so that momentum is kept.
 template <int D, class Shape>
 bool held_node(const Grid<D>& grid, std::size_t n, double dt) {
-  if constexpr (Shape::gradient_jumps) return grid.mass[n] > 0.0 && grid.stiffness[n] * dt * dt > grid.mass[n];
+  if constexpr (Shape::gradient_jumps)
+    return !grid.stiffness.empty() && grid.mass[n] > 0.0 && grid.stiffness[n] * dt * dt > grid.mass[n];
   return false;
 }
 

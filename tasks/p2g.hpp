@@ -2,7 +2,7 @@
 // p2g_force the internal and body forces, to the nodes:
 //   m_I = sum_p N_Ip m_p,  p_I = sum_p N_Ip m_p v_p,
 //   f_I = sum_p ( -V_p sigma_p . dN_Ip + N_Ip m_p g ),
-// and with linear shape functions the nodal stiffness
+// and with linear shape functions under USL the nodal stiffness
 //   k_I = sum_p V_p M_p |dN_Ip|^2  (M the P-wave modulus; tasks/grid_update.hpp held_node).
 // In 1D and 2D only the in-plane block of sigma enters the force.
 // USL and MUSL map both from the same particle state, in one pass.
@@ -17,10 +17,9 @@ namespace detail {
 // One pass over the particles: p2g_momentum, p2g_force or both, from one
 // stencil per particle. Each node sums its particles in the same order
 // whichever is mapped, so the results do not depend on the grouping.
-template <int D, class Shape, bool Momentum, bool Force>
+// `Stiffness`: also the nodal stiffness of held_node (tasks/grid_update.hpp).
+template <int D, class Shape, bool Momentum, bool Force, bool Stiffness = false>
 void p2g(DiscreteSystem<D, Shape>& system) {
-  // The nodal stiffness of held_node (tasks/grid_update.hpp), with the force.
-  constexpr bool Stiffness = Force && Shape::gradient_jumps;
   auto& grid = system.grid;
   for_each_active_node(grid, [&](std::size_t n, const Index<D>&) {
     if constexpr (Momentum) grid.mass[n] = 0.0;
@@ -81,6 +80,17 @@ void p2g(DiscreteSystem<D, Shape>& system) {
   });
 }
 
+// The force pass, with the nodal stiffness where the grid keeps it (USL
+// with linear shape functions).
+template <int D, class Shape, bool Momentum>
+void p2g_with_force(DiscreteSystem<D, Shape>& system) {
+  if (Shape::gradient_jumps && !system.grid.stiffness.empty()) {
+    p2g<D, Shape, Momentum, true, Shape::gradient_jumps>(system);
+  } else {
+    p2g<D, Shape, Momentum, true>(system);
+  }
+}
+
 }  // namespace detail
 
 template <int D, class Shape>
@@ -90,12 +100,12 @@ void p2g_momentum(DiscreteSystem<D, Shape>& system) {
 
 template <int D, class Shape>
 void p2g_force(DiscreteSystem<D, Shape>& system) {
-  detail::p2g<D, Shape, false, true>(system);
+  detail::p2g_with_force<D, Shape, false>(system);
 }
 
 template <int D, class Shape>
 void p2g_momentum_and_force(DiscreteSystem<D, Shape>& system) {
-  detail::p2g<D, Shape, true, true>(system);
+  detail::p2g_with_force<D, Shape, true>(system);
 }
 
 }  // namespace flowmpm
