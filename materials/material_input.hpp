@@ -18,6 +18,14 @@ struct MaterialInput {
   // root of its area in 2D, its length in 1D; for size-dependent
   // regularisation (crack band).
   double length = 0.0;
+  // The particle's own temperature and solvent, when the scene conducts heat
+  // or diffuses solvent (tasks/transport.hpp); 0 otherwise. Models with
+  // expansion take them from here unless they are driven by a uniform
+  // function of time (materials/expansion.hpp).
+  double temperature_change = 0.0;  // T - T_ref at the end of the increment (K)
+  double temperature_step = 0.0;    // change of T over the increment (K)
+  double concentration = 0.0;       // c at the end of the increment (weight fraction)
+  double concentration_step = 0.0;  // change of c over the increment
 };
 
 struct ParticleInit {

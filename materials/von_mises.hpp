@@ -26,15 +26,20 @@
 // sigma_Y) / (E + H) (Newton for the power law), and the lateral strains
 // d eps_yy = d eps_zz = -nu d eps_e - d eps_p / 2 (plastic incompressibility).
 // The stress turns with the material (rotation.hpp, Hughes-Winget), so a
-// rigid rotation rotates it and does not load it.
+// rigid rotation rotates it and does not load it. The isotropic expansion
+// increment th = alpha d(T - T_ref) + beta dc takes no stress: every
+// return above sees the mechanical increment d eps - th I
+// (materials/expansion.hpp).
 #pragma once
 #include <cmath>
 
 #include "core/voigt.hpp"
+#include "materials/expansion.hpp"
+#include "materials/lame.hpp"
 #include "materials/material_input.hpp"
 #include "materials/rotation.hpp"
-#include "materials/lame.hpp"
 #include "materials/stress_state.hpp"
+#include "materials/transport_properties.hpp"
 
 namespace flowmpm {
 
@@ -55,6 +60,8 @@ struct VonMises {
     double hardening_modulus = 0.0;   // linear: H = d sigma_Y / d eps_p (Pa); 0: perfectly plastic
     double reference_strain = 0.0;    // power: eps_0 (-)
     double hardening_exponent = 0.0;  // power: n (-)
+    TransportProperties transport;    // heat capacity, conductivity, diffusivity (scalars)
+    Expansion expansion;              // isotropic alpha, beta and what drives them
   };
   struct State {
     double eps_p = 0.0;  // equivalent plastic strain, integral of sqrt(2/3 d eps_p : d eps_p)
@@ -74,6 +81,7 @@ struct VonMises {
   static VonMises read(ParameterTable& table);
 
   double density() const { return parameters.density; }
+  const TransportProperties& transport() const { return parameters.transport; }
   // P wave of the elastic material, sqrt((lambda + 2 mu) / rho) (m/s).
   double wave_speed() const { return std::sqrt((lambda + 2.0 * mu) / parameters.density); }
 
@@ -137,6 +145,29 @@ struct VonMises {
 
   template <StressState Kind>
   void update(State& state, Voigt& sigma, Voigt& deps, const MaterialInput& in) const {
+    if (!parameters.expansion.any()) return mechanical_update<Kind>(state, sigma, deps, in);
+    // The return sees the mechanical increment d eps - th I; the total is restored after.
+    const double th = parameters.expansion.isotropic_step(in);
+    for (int i = 0; i < 3; ++i) deps[i] -= th;
+    mechanical_update<Kind>(state, sigma, deps, in);
+    for (int i = 0; i < 3; ++i) deps[i] += th;
+  }
+
+  // Elastic strain energy per unit volume, sigma : C^-1 : sigma / 2 =
+  // p^2 / (2 K) + s : s / (4 G) (any stress state: the stress holds the
+  // elastic strain; the plastic work is dissipated).
+  double stored_energy(const State&, const Voigt& sigma, const Voigt&) const {
+    const double p = (sigma[0] + sigma[1] + sigma[2]) / 3.0;
+    Voigt s = sigma;
+    for (int i = 0; i < 3; ++i) s[i] -= p;
+    return p * p / (2.0 * K) + double_contraction(s, s) / (4.0 * mu);
+  }
+
+ private:
+  // The update for a mechanical strain increment: elastic trial and return.
+  template <StressState Kind>
+  [[gnu::always_inline]] void mechanical_update(State& state, Voigt& sigma, Voigt& deps,
+                                                const MaterialInput& in) const {
     const double E = parameters.youngs_modulus, nu = parameters.poisson_ratio;
     if constexpr (Kind == StressState::uniaxial_stress) {
       const double trial = sigma[0] + E * deps[0], q = std::abs(trial);
@@ -178,16 +209,6 @@ struct VonMises {
         state.eps_p += dep;
       }
     }
-  }
-
-  // Elastic strain energy per unit volume, sigma : C^-1 : sigma / 2 =
-  // p^2 / (2 K) + s : s / (4 G) (any stress state: the stress holds the
-  // elastic strain; the plastic work is dissipated).
-  double stored_energy(const State&, const Voigt& sigma, const Voigt&) const {
-    const double p = (sigma[0] + sigma[1] + sigma[2]) / 3.0;
-    Voigt s = sigma;
-    for (int i = 0; i < 3; ++i) s[i] -= p;
-    return p * p / (2.0 * K) + double_contraction(s, s) / (4.0 * mu);
   }
 };
 
