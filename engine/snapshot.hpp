@@ -24,6 +24,8 @@ inline constexpr OutputField output_fields[] = {
     {"position", 3, "m", false}, {"velocity", 3, "m/s", false}, {"stress", 6, "Pa", false},
     {"strain", 6, "-", false},   {"volume", 1, "m^3", false},   {"mass", 1, "kg", false},
     {"material", 1, nullptr, true},  // index into the case's materials
+    // Only in scenes that conduct heat / diffuse solvent (tasks/transport.hpp).
+    {"temperature", 1, "K", false},  {"concentration", 1, "-", false},  // weight fraction
 };
 
 inline std::vector<std::string> output_field_names() {

@@ -4,7 +4,8 @@
 // once per step. Parallelism lives inside each stage (coarse graph, fine
 // loops). A node may run two particle stages in one pass over the particles
 // ("&"), where both read the same particle state: each particle's stencil is
-// then evaluated once instead of twice.
+// then evaluated once instead of twice. Nodes without a path between them
+// run concurrently (the transport branch beside the momentum stages).
 #pragma once
 #include <functional>
 #include <memory>
@@ -23,8 +24,9 @@ struct Wiring {
   std::vector<std::pair<int, int>> edges;   // (from, to) node indices
   // Node indices in an order that respects every edge (the serial step).
   std::vector<int> topological_order() const;
-  // Human-readable: "p2g_momentum & p2g_force -> grid_velocity -> ...",
-  // with "+" between nodes that start the step side by side.
+  // Human-readable: "p2g_momentum & p2g_force -> grid_velocity -> ...";
+  // a branch that runs beside follows " || " and ends with the node it
+  // joins before: "... || transport_p2g -> ... -> transport_g2p -> g2p_motion & g2p_stress".
   std::string describe() const;
 };
 

@@ -4,6 +4,9 @@
 //             with v_I the velocity after grid_integrate.
 // g2p_stress: L_p = sum_I v_I (x) dN_Ip, d eps = sym(L_p) dt, the material
 //             update sigma(d eps), eps += d eps, V_p *= 1 + tr(d eps).
+// The material update sees the particle's own temperature and
+// concentration when the scene carries them (tasks/transport.hpp, whose
+// branch of the step graph joins before this stage).
 // USL does both in one pass over the particles, with N and dN at the
 // positions of the start of the step: the stencil of the step's p2g, as in
 // CB-Geo mpm. MUSL's g2p_stress follows the remap, so it and the remap see
@@ -19,11 +22,20 @@ namespace flowmpm {
 
 namespace detail {
 
+// A batch's particle temperatures and concentrations for the material
+// update (null when the scene carries none), and its material's T_ref.
+struct TransportedInput {
+  const double *temperature = nullptr, *temperature_step = nullptr;
+  const double *concentration = nullptr, *concentration_step = nullptr;
+  double reference_temperature = 0.0;  // K
+};
+
 // The material update of particle p for its velocity gradient L (g2p_stress).
 template <int D, class Shape, StressState Kind, class MaterialModel>
 [[gnu::always_inline]] inline void update_particle_stress(DiscreteSystem<D, Shape>& system, ParticleBatch<D>& b, std::size_t p,
                                                          const double (&L)[D][D], const MaterialModel& material,
-                                                         typename MaterialModel::State& state) {
+                                                         typename MaterialModel::State& state,
+                                                         const TransportedInput& transported) {
   const double dt = system.dt;
   Voigt deps{};
   for (int i = 0; i < D; ++i)
@@ -34,6 +46,14 @@ template <int D, class Shape, StressState Kind, class MaterialModel>
   input.length = b.particle_length;
   for (int i = 0; i < D; ++i)
     for (int j = 0; j < D; ++j) input.dL(i, j) = L[i][j] * dt;
+  if (transported.temperature) {
+    input.temperature_change = transported.temperature[p] - transported.reference_temperature;
+    input.temperature_step = transported.temperature_step[p];
+  }
+  if (transported.concentration) {
+    input.concentration = transported.concentration[p];
+    input.concentration_step = transported.concentration_step[p];
+  }
   material.template update<Kind>(state, b.stress[p], deps, input);
   if (!std::isfinite(b.stress[p][0] + b.stress[p][1] + b.stress[p][2] + b.stress[p][3] + b.stress[p][4] +
                      b.stress[p][5])) {
@@ -52,10 +72,21 @@ void with_stress_update(DiscreteSystem<D, Shape>& system, ParticleBatch<D>& b, F
       [&](const auto& material) {
         using M = std::decay_t<decltype(material)>;
         auto& states = std::get<StateArray<M>>(b.states);
+        TransportedInput transported;
+        if (!b.temperature.empty()) {
+          transported.temperature = b.temperature.data();
+          transported.temperature_step = b.temperature_step.data();
+          transported.reference_temperature = material.transport().reference_temperature.value_or(0.0);
+        }
+        if (!b.concentration.empty()) {
+          transported.concentration = b.concentration.data();
+          transported.concentration_step = b.concentration_step.data();
+        }
         auto for_state = [&]<StressState Kind>() {
           typename M::State no_state{};
           f([&](std::size_t p, const double(&L)[D][D]) {
-            update_particle_stress<D, Shape, Kind>(system, b, p, L, material, states.empty() ? no_state : states[p]);
+            update_particle_stress<D, Shape, Kind>(system, b, p, L, material, states.empty() ? no_state : states[p],
+                                                   transported);
           });
         };
         if constexpr (D == 3) {
