@@ -24,15 +24,29 @@ double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-std::string stored_fields(int dimension) {
+std::string stored_fields(int dimension, bool heat, bool solvent) {
   const std::string vec = dimension == 1 ? "scalar" : std::to_string(dimension) + "-vector";
-  return "x, v (" + vec + "), mass, volume, stress, strain (6 Voigt)";
+  return "x, v (" + vec + "), mass, volume, stress, strain (6 Voigt)" +
+         std::string(heat ? ", temperature and its step" : "") +
+         std::string(solvent ? ", concentration and its step" : "");
+}
+
+// The time-step limits and which one governs, for the log.
+std::string time_step_limits(const SystemSpec& spec) {
+  const StableStep stable = stable_time_step(spec);
+  const std::optional<DiffusionStep> diffusion = diffusion_time_step(spec);
+  std::string text = fmt::format("wave limit h/c {:.4g} s (material '{}')", stable.dt, stable.material);
+  if (!diffusion) return text + " governs";
+  text += fmt::format(", {} diffusion limit {:.4g} s (material '{}', diffusivity {:.4g} m^2/s)", diffusion->field,
+                      diffusion->dt, diffusion->material, diffusion->diffusivity);
+  return text + (diffusion->dt < stable.dt ? ": the diffusion limit governs" : ": the wave limit governs");
 }
 
 template <int D, class Shape>
-void log_system(const Case& c, const DiscreteSystem<D, Shape>& system, const Scheme& scheme) {
+void log_system(const Case& c, const Simulation<D, Shape>& sim, const Scheme& scheme) {
+  const DiscreteSystem<D, Shape>& system = sim.system();
   spdlog::info("model: {}D ({}), scheme {} [{}], shape function {}, velocity update {}{}", D,
-               stress_state_name(system.stress_state), scheme.label, scheme.wiring.describe(), Shape::name,
+               stress_state_name(system.stress_state), scheme.label, sim.graph().wiring().describe(), Shape::name,
                c.velocity_update,
                c.velocity_update == "blend" ? " (FLIP fraction " + std::to_string(system.flip_fraction) + ")" : "");
   std::string cells;
@@ -46,20 +60,39 @@ void log_system(const Case& c, const DiscreteSystem<D, Shape>& system, const Sch
                  c.system.bodies[b.body].name, b.size(), m.name, type_name(m.model), density(m.model),
                  wave_speed(m.model));
   }
-  spdlog::info("particle fields stored: {}", stored_fields(D));
+  spdlog::info("particle fields stored: {}", stored_fields(D, system.heat.carried, system.solvent.carried));
   for (const auto& k : system.constraints) {
     spdlog::info("node set '{}': {} nodes, velocity prescribed along {}", k.name, k.nodes.size(),
                  "xyz"[k.axis]);
   }
+  if (system.heat.carried || system.solvent.carried) {
+    spdlog::info("transport: {}{}{} on the grid, a branch of the step graph beside the momentum stages",
+                 system.heat.carried ? "heat conduction" : "",
+                 system.heat.carried && system.solvent.carried ? " and " : "",
+                 system.solvent.carried ? "solvent diffusion" : "");
+  }
+  for (const auto* field : {&system.heat, &system.solvent}) {
+    for (const auto& k : field->prescribed) {
+      spdlog::info("node set '{}': {} nodes, {} prescribed", k.name, k.nodes.size(),
+                   field == &system.heat ? "temperature" : "concentration");
+    }
+  }
+  for (const auto& f : system.surface_fluxes) {
+    spdlog::info("surface flux '{}': {}{}", f.name, f.heat ? "heat" : "",
+                 f.solvent ? (f.heat ? " and solvent" : "solvent") : "");
+  }
   if (system.gravity.norm() > 0.0) spdlog::info("gravity: {} m/s^2", system.gravity.norm());
   const StableStep stable = stable_time_step(c.system);
+  const std::optional<DiffusionStep> diffusion = diffusion_time_step(c.system);
+  const double limit = diffusion ? std::min(stable.dt, diffusion->dt) : stable.dt;
   if (c.dt_auto) {
     spdlog::info("time: dt automatic, CFL {} (first step {:.4g} s; the stable limit at rest is {:.4g} s), to t = {} s",
-                 c.cfl, c.dt, stable.dt, c.end_time);
+                 c.cfl, c.dt, limit, c.end_time);
   } else {
-    spdlog::info("time: dt = {} s ({:.3g} of the stable limit {:.4g} s), {} steps to t = {} s", c.dt,
-                 c.dt / stable.dt, stable.dt, c.steps, c.end_time);
+    spdlog::info("time: dt = {} s ({:.3g} of the stable limit {:.4g} s), {} steps to t = {} s", c.dt, c.dt / limit,
+                 limit, c.steps, c.end_time);
   }
+  if (diffusion) spdlog::info("time-step limits: {}", time_step_limits(c.system));
 }
 
 template <int D, class Shape>
@@ -68,7 +101,7 @@ RunSummary run(const Case& c, const RunOptions& options) {
   const Scheme& scheme = scheme_named(c.scheme);
   Simulation<D, Shape> sim(c.system, scheme.wiring, c.dt_auto ? 0.0 : c.dt);
   auto& system = sim.system();
-  log_system(c, system, scheme);
+  log_system(c, sim, scheme);
 
   RunSummary summary;
   summary.case_name = c.name;
@@ -177,10 +210,13 @@ RunSummary run(const Case& c, const RunOptions& options) {
                        last_good.step, last_good.time);
   };
   auto done = [&] { return c.dt_auto ? system.t >= c.end_time * (1.0 - 1e-12) : system.step >= c.steps; };
+  const std::optional<DiffusionStep> diffusion = diffusion_time_step(c.system);
   auto next_dt = [&] {
     if (!c.dt_auto) return c.dt;
-    // CFL condition with the particles' own speed added to the wave speed.
-    const double dt = c.cfl * system.grid.h.minCoeff() / (c_max + std::sqrt(system.max_speed_sq));
+    // CFL condition with the particles' own speed added to the wave speed,
+    // and the explicit diffusion limit (the same fraction of it).
+    double dt = c.cfl * system.grid.h.minCoeff() / (c_max + std::sqrt(system.max_speed_sq));
+    if (diffusion) dt = std::min(dt, c.cfl * diffusion->dt);
     return std::min(dt, c.end_time - system.t);
   };
   const Diagnostics initial = sim.diagnostics(body_count);
@@ -252,7 +288,7 @@ void describe_case(const Case& c) {
     const Scheme& scheme = scheme_named(c.scheme);
     Simulation<D, Shape> sim(c.system, scheme.wiring, c.dt_auto ? 0.0 : c.dt);
     if (c.reference) c.reference->initialise(sim.system());
-    log_system(c, sim.system(), scheme);
+    log_system(c, sim, scheme);
   });
 }
 
