@@ -92,6 +92,8 @@ ParticleSnapshot make_snapshot(std::int64_t step, double time, std::size_t count
     field(s, "volume").real.push_back(1e-9 * (1.0 + x / 3.0));
     field(s, "mass").real.push_back(2.7e-6 * (1.0 + x / 11.0));
     field(s, "material").integer.push_back(static_cast<std::int32_t>(i % 3));
+    field(s, "temperature").real.push_back(293.15 + x / 13.0);
+    field(s, "concentration").real.push_back(0.01 * (1.0 + x / 17.0));
   }
   return s;
 }
