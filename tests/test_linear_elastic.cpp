@@ -11,7 +11,7 @@ using namespace flowmpm;
 
 namespace {
 
-const LinearElastic steel_like(LinearElastic::Parameters{1.0, 1000.0, 0.2});
+const LinearElastic steel_like(LinearElastic::Parameters{.density = 1.0, .youngs_modulus = 1000.0, .poisson_ratio = 0.2});
 
 template <StressState S>
 Voigt drive(const Voigt& total_strain, Voigt& strain_out) {
