@@ -9,6 +9,8 @@
 #pragma once
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <numeric>
 #include <numbers>
 #include <type_traits>
 
@@ -58,6 +60,7 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
     cells[d] = spec.grid.cells[d];
   }
   system.grid = Grid<D>(origin, h, cells);
+  if constexpr (Shape::gradient_jumps) system.grid.stiffness.assign(system.grid.node_count(), 0.0);
   system.blocks = BlockLayout<D, Shape>(cells);
   for (const auto& m : spec.materials) system.materials.push_back(m.model);
   for (int d = 0; d < D; ++d) system.gravity[d] = spec.gravity[d];
@@ -74,6 +77,7 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
     system.surface_fluxes.push_back({f.name, area, f.heat, f.solvent});
   }
 
+  // The least particle mass and heat capacity, for the transport thresholds.
   double lightest = std::numeric_limits<double>::infinity();
   double least_heat_capacity = std::numeric_limits<double>::infinity();
   for (std::size_t bi = 0; bi < spec.bodies.size(); ++bi) {
@@ -164,9 +168,9 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
     lightest = std::min(lightest, rho * volume);
     system.batches.push_back(std::move(batch));
   }
-  // A node holding less than a millionth of the lightest particle's mass
-  // only sees the far tail of a shape function: its v = p / m is noise.
-  system.mass_threshold = 1e-6 * lightest;
+  // A node holding less than a millionth of the least particle capacity
+  // only sees the far tail of a shape function: its transport update
+  // dt Q / (mC) is noise, and it keeps its value.
   if (system.heat.carried) {
     system.grid.heat.allocate(system.grid.node_count());
     system.heat.capacity_threshold = 1e-6 * least_heat_capacity;
@@ -174,6 +178,13 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
   if (system.solvent.carried) {
     system.grid.solvent.allocate(system.grid.node_count());
     system.solvent.capacity_threshold = 1e-6 * lightest;
+  }
+  // Particle ids in the order the particles were made: their rows in the output.
+  std::uint32_t next_id = 0;
+  for (auto& batch : system.batches) {
+    batch.id.resize(batch.size());
+    std::iota(batch.id.begin(), batch.id.end(), next_id);
+    next_id += static_cast<std::uint32_t>(batch.size());
   }
 
   for (const NodeSetSpec& set : spec.node_sets) {
@@ -202,7 +213,11 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
     if (set.concentration) system.solvent.prescribed.push_back({set.name, nodes, *set.concentration});
     if (!set.constrains_velocity()) continue;
     auto pairs = ghost_mirror_pairs<D, Shape>(system, set, nodes);
-    if (!pairs.empty()) system.mirror_planes.push_back({set.name, std::move(pairs), set.velocity});
+    if (!pairs.empty()) {
+      for (NodeConstraint& k : system.constraints)
+        if (k.name == set.name) k.mirror_plane = static_cast<int>(system.mirror_planes.size());
+      system.mirror_planes.push_back({set.name, std::move(pairs), set.velocity});
+    }
   }
 
   // Every particle must start where its stencil has grid nodes.

@@ -33,6 +33,7 @@ struct ParticleBatch {
   std::vector<Vec<D>> x0;                  // initial positions, only when a reference needs them
   std::vector<double> mass, volume;        // kg, m^3
   std::vector<Voigt> stress, strain;       // Pa, -
+  std::vector<std::uint32_t> id;           // made in this order at set-up: the output row
   MaterialStates states;                   // the model's internal variables
   // Only when the scene conducts heat: T (K) and its change over the last
   // transport step; only when it diffuses solvent: c (weight fraction) and
@@ -72,6 +73,7 @@ struct ParticleBatch {
     f("volume", self.volume);
     f("stress", self.stress);
     f("strain", self.strain);
+    f("id", self.id);
     f("temperature", self.temperature);
     f("temperature_step", self.temperature_step);
     f("concentration", self.concentration);

@@ -11,9 +11,9 @@
 #include "core/number_text.hpp"
 #include "core/registry.hpp"
 #include "discretisation/shape_functions.hpp"
-#include "discretisation/stable_time_step.hpp"
 #include "engine/schemes.hpp"
-#include "engine/snapshot.hpp"
+#include "engine/stable_time_step.hpp"
+#include "engine/take_snapshot.hpp"
 #include "io/case_reader.hpp"
 
 namespace flowmpm {
@@ -42,7 +42,15 @@ std::string apply_override(toml::table& root, const std::string& assignment) {
 
   std::vector<std::string> parts;
   std::stringstream ss(key);
-  for (std::string part; std::getline(ss, part, '.');) parts.push_back(part);
+  // "bodies[0].velocity" (as messages name keys) is "bodies.0.velocity".
+  for (std::string part; std::getline(ss, part, '.');) {
+    while (!part.empty() && part.back() == ']' && part.find('[') != std::string::npos) {
+      const std::size_t open = part.rfind('[');
+      parts.push_back(part.substr(0, open));
+      part = part.substr(open + 1, part.size() - open - 2);
+    }
+    parts.push_back(part);
+  }
   toml::node* node = &root;
   for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
     if (toml::table* t = node->as_table()) {
@@ -93,11 +101,23 @@ Vec3 per_axis(TableReader& t, std::string_view key, int dim) {
   return vector_of(t, key, dim);
 }
 
-// The output fields a scene has: the transported ones only when carried.
-std::vector<std::string> written_fields(const SystemSpec& c) {
-  std::vector<std::string> names = output_field_names();
+// The output fields a case may ask for: the built-in ones and the state
+// variables of its models, the transported fields only when carried.
+std::vector<std::string> offered_fields(const SystemSpec& c) {
+  std::vector<Material> materials;
+  for (const NamedMaterial& m : c.materials) materials.push_back(m.model);
+  std::vector<std::string> names;
+  for (const OutputField& f : output_fields_of(materials)) names.emplace_back(f.name);
   if (!c.conducts_heat()) std::erase(names, "temperature");
   if (!c.diffuses_solvent()) std::erase(names, "concentration");
+  return names;
+}
+
+// The fields written when a case does not choose, with the transported ones.
+std::vector<std::string> default_fields(const SystemSpec& c) {
+  std::vector<std::string> names = default_output_fields();
+  if (c.conducts_heat()) names.emplace_back("temperature");
+  if (c.diffuses_solvent()) names.emplace_back("concentration");
   return names;
 }
 
@@ -123,8 +143,9 @@ void read_analysis(TableReader t, Case& c) {
   if (t.has("dt") && t.node("dt")->is_string()) {
     t.require(t.string("dt") == "auto", "dt", "a time step in s, or \"auto\"");
     c.dt_auto = true;
+    // Without cfl: 0.8 of the stable limit, at most 0.5 (set with the bodies).
     c.cfl = t.number_or("cfl", 0.5);
-    t.require(c.cfl > 0.0 && c.cfl <= 1.0, "cfl", "a CFL number in (0, 1]");
+    t.require(c.cfl > 0.0, "cfl", "a positive CFL number");
     c.end_time = t.number("end_time");
     t.require(c.end_time > 0.0, "end_time", "a positive end time in s");
     if (t.has("steps")) t.fail("steps", "no steps with dt = \"auto\" (give end_time)");
@@ -372,10 +393,12 @@ void read_output(TableReader t, Case& c) {
   c.output.every = t.integer_or("every", 0);
   t.require(c.output.every >= 0, "every", "a number of steps >= 0 (0: about 20 over the run)");
   if (t.has("fields")) {
-    const std::vector<std::string> known = written_fields(c.system);
+    const std::vector<std::string> known = offered_fields(c.system);
     c.output.fields = t.strings("fields");
     for (const std::string& name : c.output.fields) {
-      if (std::ranges::find(known, name) == known.end()) t.fail("fields", "field names among " + quoted_list(known));
+      if (std::ranges::find(known, name) == known.end()) {
+        t.fail("fields", "field names among " + quoted_list(known) + " (\"" + name + "\" is none of them)");
+      }
     }
     // The XDMF geometry needs the positions.
     if (std::ranges::find(c.output.fields, "position") == c.output.fields.end()) c.output.fields.push_back("position");
@@ -442,31 +465,47 @@ Case read_case(const std::filesystem::path& file, const std::vector<std::string>
     c.system.keep_initial_positions = true;
   }
   c.output.directory = "results/" + c.name;
-  c.output.fields = written_fields(c.system);
+  c.output.fields = default_fields(c.system);
   if (t.has("output")) read_output(t.table("output"), c);
+  for (const char* needs_x0 : {"displacement", "initial_position"}) {
+    if (std::ranges::find(c.output.fields, needs_x0) != c.output.fields.end()) c.system.keep_initial_positions = true;
+  }
   t.reject_unknown_keys();
 
-  // The explicit step is stable only below the time a P wave takes to cross
-  // the smallest cell (CFL number 1).
-  // With transport, the explicit diffusion limit too.
-  const StableStep stable = stable_time_step(c.system);
-  const std::optional<DiffusionStep> diffusion = diffusion_time_step(c.system);
-  if (c.dt_auto) {  // the first step's, particles at rest
-    c.dt = c.cfl * (diffusion ? std::min(stable.dt, diffusion->dt) : stable.dt);
+  // The explicit step is stable only below a fraction of the time a P wave
+  // takes to cross the smallest cell, and, with transport, below the
+  // explicit diffusion limit (engine/stable_time_step.hpp).
+  const Scheme& scheme = scheme_named(c.scheme);
+  const TimeStepLimit limits = time_step_limit(c.system, scheme);
+  const StableStep& stable = limits.wave;
+  const std::string limit = readable_text(stable.factor) + " h/c = " + readable_text(stable.dt()) + " s for " +
+                            scheme.label + " with " + c.system.shape_function + " shape functions at " +
+                            readable_text(stable.particles_per_cell) + " particles per cell (h/c = " +
+                            readable_text(stable.crossing) +
+                            " s: smallest cell over the P-wave speed of material \"" + stable.material + "\")";
+  TableReader analysis = t.table("analysis");
+  if (c.dt_auto) {
+    if (!analysis.has("cfl")) c.cfl = std::min(0.5, 0.8 * stable.factor);
+    analysis.require(c.cfl <= stable.factor, "cfl", "a CFL number no larger than the stable limit " + limit);
+    c.dt = c.cfl * stable.crossing;  // the first step's, particles at rest
+    // The same fraction of the diffusion limit as of the wave limit.
+    if (limits.diffusion) c.dt = std::min(c.dt, c.cfl / stable.factor * limits.diffusion->dt);
   }
   c.system.dt = c.dt;
-  if (c.dt > stable.dt) {
-    TableReader analysis = t.table("analysis");
-    analysis.fail("dt", "a time step no larger than the stable limit h/c = " + readable_text(stable.dt) +
-                            " s (smallest cell over the P-wave speed of material \"" +
-                            stable.material + "\")");
+  if (!limits.diffusion) {
+    if (c.dt > stable.dt()) analysis.fail("dt", "a time step no larger than the stable limit " + limit);
+    return c;
   }
-  if (diffusion && c.dt > diffusion->dt) {
-    TableReader analysis = t.table("analysis");
-    analysis.fail("dt", "a time step no larger than the diffusion limit 1 / (2 kappa sum_d 1/h_d^2) = " +
-                            readable_text(diffusion->dt) + " s (" + diffusion->field + " diffusivity " +
-                            readable_text(diffusion->diffusivity) + " m^2/s of material \"" +
-                            diffusion->material + "\")");
+  const DiffusionStep& diffusion = *limits.diffusion;
+  const std::string diffusion_limit = "the " + diffusion.field + " diffusion limit 1 / (2 kappa sum_d 1/h_d^2) = " +
+                                      readable_text(diffusion.dt) + " s (" + diffusion.field + " diffusivity " +
+                                      readable_text(diffusion.diffusivity) + " m^2/s of material \"" +
+                                      diffusion.material + "\")";
+  const std::string wave_limit = "the wave limit " + limit;
+  if (c.dt > limits.dt()) {
+    analysis.fail("dt", "a time step no larger than the stable limit " + readable_text(limits.dt()) + " s: " +
+                            (limits.diffusion_governs() ? diffusion_limit + " governs; " + wave_limit
+                                                        : wave_limit + " governs; " + diffusion_limit));
   }
   return c;
 }

@@ -12,6 +12,7 @@
 //   double wave_speed() const;                       // fastest wave, m/s (stable dt)
 //   const TransportProperties& transport() const;    // heat capacity, conductivity,
 //                                                    // diffusivity, T_ref (transport_properties.hpp)
+// optionally named state variables for output (materials/state_variable.hpp),
 // and, for models with material axes (optional):
 //   Eigen::Quaterniond material_axes(const State&) const;  // R, material to global: the
 //                                                    // conductivity and diffusivity turn with it

@@ -30,7 +30,7 @@
 #include <string>
 
 #include "discretisation/shape_linear.hpp"
-#include "discretisation/stable_time_step.hpp"
+#include "engine/stable_time_step.hpp"
 #include "material_point_driver.hpp"
 #include "test_helpers.hpp"
 #include "verification/slab_series.hpp"
@@ -100,7 +100,7 @@ TEST_CASE("slab conduction: second order in space, faces held") {
 
 TEST_CASE("the explicit diffusion limit: a bound, a third of what the particle scheme tolerates") {
   // 1D, 16 cells: the limit is h^2 / (2 kappa) = 0.01953 s, below the wave
-  // limit h / c = 0.01976 s. It is 2 / lambda_max of the grid's M^-1 K
+  // limit 0.495 h / c = 0.0309 s. It is 2 / lambda_max of the grid's M^-1 K
   // (lambda_max = 4 kappa / h^2), which bounds the particle scheme's
   // operator S^T M^-1 K P (P S^T, the map from the grid to the particles
   // and back, is a contraction). The map halves the grid's shortest waves
@@ -112,7 +112,7 @@ TEST_CASE("the explicit diffusion limit: a bound, a third of what the particle s
   const std::optional<DiffusionStep> limit = diffusion_time_step(c.system);
   REQUIRE(limit);
   CHECK(limit->dt == doctest::Approx(0.00625 * 0.00625 / (2.0 * 1e-3)).epsilon(1e-12));
-  CHECK(limit->dt < stable_time_step(c.system).dt);
+  CHECK(limit->dt < stable_time_step(c.system, scheme_named(c.scheme)).dt());
   auto largest_after = [&](double fraction) {
     c.dt = c.system.dt = fraction * limit->dt;
     auto sim = testing::simulation<1, LinearShape>(c);
@@ -124,13 +124,24 @@ TEST_CASE("the explicit diffusion limit: a bound, a third of what the particle s
   CHECK(largest_after(1.0) < 50.5);  // between 300 and 400 K
   CHECK(largest_after(2.9) < 50.5);
   CHECK(largest_after(3.1) > 1e3);
-  // The reader refuses a fixed dt above the limit, and dt = "auto" takes its CFL fraction of it.
+  // The reader refuses a fixed dt above the limit, naming the limit that
+  // governs and the other one; dt = "auto" takes the same fraction of the
+  // diffusion limit as its CFL number is of the wave limit (the default
+  // cfl = 0.8 f: 0.8).
   CHECK(contains(case_error(text_of(testing::config("verification/slab_conduction.toml")),
                             {"analysis.dt=0.0196", "analysis.end_time=0.98"}),
-                 "analysis.dt: expected a time step no larger than the diffusion limit 1 / (2 kappa sum_d 1/h_d^2) "
-                 "= 0.0195312 s (heat diffusivity 0.001 m^2/s of material \"model\"), got the number 0.0196"));
+                 "analysis.dt: expected a time step no larger than the stable limit 0.0195312 s: the heat diffusion "
+                 "limit 1 / (2 kappa sum_d 1/h_d^2) = 0.0195312 s (heat diffusivity 0.001 m^2/s of material "
+                 "\"model\") governs; the wave limit 0.495 h/c = 0.0309375 s for USL with linear shape functions at 2 "
+                 "particles per cell (h/c = 0.0625 s: smallest cell over the P-wave speed of material \"model\"), "
+                 "got the number 0.0196"));
+  // Below the diffusion limit but above the wave limit: the wave limit governs.
+  CHECK(contains(case_error(text_of(testing::config("verification/slab_conduction.toml")),
+                            {"analysis.dt=0.015625", "materials.model.youngs_modulus=100.0"}),
+                 "analysis.dt: expected a time step no larger than the stable limit 0.0097833 s: the wave limit "
+                 "0.495 h/c"));
   const Case automatic = read_case(testing::config("verification/slab_conduction.toml"), {"analysis.dt=\"auto\""});
-  CHECK(automatic.dt == doctest::Approx(0.5 * limit->dt).epsilon(1e-12));
+  CHECK(automatic.dt == doctest::Approx(0.8 * limit->dt).epsilon(1e-12));
 }
 
 TEST_CASE("anisotropic conduction: axes turned 30 degrees conduct k_x cos^2 + k_y sin^2 along x") {
@@ -191,7 +202,7 @@ TEST_CASE("thermal stress: a free plate with a linear temperature across it bend
   CHECK(coarse.at("stress") < 0.036);
   CHECK(coarse.at("temperature") < 1e-3);
   const auto fine = errors_of("verification/thermal_bending_2d.toml",
-                              {"grid.cell_size=0.005", "grid.cells=[48, 20]", "analysis.dt=1e-4"});
+                              {"grid.cell_size=0.005", "grid.cells=[48, 20]", "analysis.dt=6.25e-5"});
   CHECK(rate(coarse.at("stress"), fine.at("stress")) >= 0.9);
 }
 
@@ -204,7 +215,7 @@ TEST_CASE("solvent diffusion with swelling: free bar and layer held across") {
   CHECK(bar.at("strain") < 0.018);
   CHECK(bar.at("stress") < 0.018);
   const auto fine = errors_of("verification/swelling_bar.toml",
-                              {"grid.cell_size=0.015625", "grid.cells=[72]", "analysis.dt=2.5e-4"});
+                              {"grid.cell_size=0.015625", "grid.cells=[72]", "analysis.dt=2e-4"});
   CHECK(rate(bar.at("concentration"), fine.at("concentration")) >= 1.9);
   CHECK(rate(bar.at("stress"), fine.at("stress")) >= 0.9);
   const auto layer = errors_of("verification/swelling_layer_2d.toml");
