@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 #include <spdlog/sinks/basic_file_sink.h>
 #include <spdlog/sinks/dist_sink.h>
@@ -12,6 +13,7 @@
 #include "core/number_text.hpp"
 #include "discretisation/shape_functions.hpp"
 #include "engine/schemes.hpp"
+#include "engine/energy_balance.hpp"
 #include "engine/simulation.hpp"
 #include "engine/stable_time_step.hpp"
 #include "io/results_h5.hpp"
@@ -193,8 +195,22 @@ RunSummary run(const Case& c, const RunOptions& options) {
       for (const auto& [name, value] : reference->errors()) error_names.push_back(name);
     csv.emplace(dir / "timeseries.csv", body_names, reaction_names(sim.diagnostics(body_count)), error_names);
   }
+  // The energy balance (engine/energy_balance.hpp): its change since the
+  // start at each recorded step, and the largest energy present so far.
+  const Diagnostics initial = sim.diagnostics(body_count);
+  const double balance_at_start = initial.energy_balance();
+  double energy_scale = 0.0, worst_balance_error = 0.0;
+  auto balance_error = [&](const Diagnostics& d) {
+    const double error = d.energy_balance() - balance_at_start;
+    energy_scale = std::max({energy_scale, d.kinetic_energy + d.stored_energy + d.dissipated_energy,
+                             std::abs(d.work.gravity), std::abs(d.work.boundary), std::abs(d.work.expansion)});
+    worst_balance_error = std::max(worst_balance_error, std::abs(error));
+    return error;
+  };
   auto write_output = [&] {
     const auto t0 = Clock::now();
+    const Diagnostics row = sim.diagnostics(body_count);
+    const double error = balance_error(row);
     if (options.write_results) {
       h5->write(sim.snapshot(c.output.fields));
       xdmf->update(*h5);
@@ -202,7 +218,7 @@ RunSummary run(const Case& c, const RunOptions& options) {
       std::vector<double> errors;
       if (reference)
         for (const auto& [name, value] : reference->errors()) errors.push_back(value);
-      csv->write(sim.diagnostics(body_count), errors);
+      csv->write(row, error, errors);
     }
     summary.output_seconds += seconds_since(t0);
   };
@@ -214,13 +230,21 @@ RunSummary run(const Case& c, const RunOptions& options) {
             ? static_cast<double>(summary.particles) * static_cast<double>(system.step) / summary.step_loop_seconds
             : 0.0;
     const Diagnostics final_state = sim.diagnostics(body_count);
+    balance_error(final_state);
     summary.bodies.clear();
     for (std::size_t i = 0; i < body_count; ++i) {
       summary.bodies.push_back(
           {c.system.bodies[i].name, final_state.bodies[i].stress, final_state.bodies[i].strain});
     }
     if (reference) summary.errors = reference->errors();
-    summary.energy_final = final_state.kinetic_energy + final_state.strain_energy;
+    summary.kinetic_energy = final_state.kinetic_energy;
+    summary.stored_energy = final_state.stored_energy;
+    summary.dissipated_energy = final_state.dissipated_energy;
+    summary.gravity_work = final_state.work.gravity;
+    summary.boundary_work = final_state.work.boundary;
+    summary.expansion_work = final_state.work.expansion;
+    summary.energy_error = energy_scale > 0.0 ? worst_balance_error / energy_scale
+                                              : std::numeric_limits<double>::quiet_NaN();
     if (options.write_results) {
       xdmf->finish(*h5);
       write_summary(dir / "summary.json", summary);
@@ -234,11 +258,25 @@ RunSummary run(const Case& c, const RunOptions& options) {
   const StableStep stable = stable_time_step(c.system, scheme);
   const double c_max = system.grid.h.minCoeff() / stable.crossing;  // fastest wave speed
   const double speed_limit = c.guard_speed_factor * c_max;
+  double total_mass = 0.0;
+  for (const auto& b : system.batches)
+    for (const double m : b.mass) total_mass += m;
+  const EnergyBudget budget{initial.kinetic_energy + initial.stored_energy + initial.dissipated_energy,
+                            0.5 * total_mass * (1e-6 * c_max) * (1e-6 * c_max), c.guard_energy_factor};
   auto check_guard = [&] {
+    const double limit = budget.limit(system.work);
+    if (system.kinetic_energy > limit) {
+      throw SimulationError(fmt::format(
+          "blow-up at step {} (t = {:.6g} s): the kinetic energy, {:.4g} J, is more than {:g} times the initial "
+          "energy plus the work done on the bodies, {:.4g} J (analysis.guard_energy_factor); the fastest: {}",
+          system.step, system.t, system.kinetic_energy, budget.factor, limit / budget.factor,
+          sim.fastest_particle(body_names)));
+    }
     if (system.max_speed_sq <= speed_limit * speed_limit) return;
     throw SimulationError(fmt::format("blow-up at step {} (t = {:.6g} s): {}, more than {:g} times the fastest "
                                       "wave speed, {:.4g} m/s (analysis.guard_speed_factor)",
-                                      system.step, system.t, sim.fastest_particle(), c.guard_speed_factor, c_max));
+                                      system.step, system.t, sim.fastest_particle(body_names),
+                                      c.guard_speed_factor, c_max));
   };
   auto write_last_good = [&] {
     if (!options.write_results) return std::string();
@@ -249,6 +287,11 @@ RunSummary run(const Case& c, const RunOptions& options) {
     return fmt::format("; the last good state (step {}, t = {:.6g} s) is the last step in results.h5",
                        last_good.step, last_good.time);
   };
+  // What may run a case that broke down (docs/STABILITY.md).
+  std::string remedy = "; a smaller time step may run it (analysis.dt, or analysis.cfl with dt = \"auto\")";
+  if (Shape::gradient_jumps && scheme.stress_from_updated_grid)
+    remedy += ", or scheme = \"musl\", or shape_function = \"gimp\" or \"bspline2\": linear shape functions "
+              "with USL are the least stable pair where the material's edge moves (docs/STABILITY.md)";
   auto done = [&] { return c.dt_auto ? system.t >= c.end_time * (1.0 - 1e-12) : system.step >= c.steps; };
   const std::optional<DiffusionStep> diffusion = diffusion_time_step(c.system);
   const double diffusion_dt = diffusion ? c.cfl / stable.factor * diffusion->dt : 0.0;
@@ -261,8 +304,6 @@ RunSummary run(const Case& c, const RunOptions& options) {
     if (diffusion) dt = std::min(dt, diffusion_dt);
     return std::min(dt, c.end_time - system.t);
   };
-  const Diagnostics initial = sim.diagnostics(body_count);
-  summary.energy_initial = initial.kinetic_energy + initial.strain_energy;
   sim.measure_speed();
 
   write_output();
@@ -308,7 +349,7 @@ RunSummary run(const Case& c, const RunOptions& options) {
     }
   } catch (const SimulationError& e) {
     if (summary.status == "completed") {
-      const std::string message = e.what() + write_last_good();
+      const std::string message = e.what() + write_last_good() + remedy;
       finish("failed: " + message);
       log->error("{}", message);
       throw SimulationError(message);
@@ -327,10 +368,11 @@ RunSummary run(const Case& c, const RunOptions& options) {
               b.name, system.t, b.mean_stress[0], b.mean_stress[1], b.mean_stress[2], b.mean_strain[0],
               b.mean_strain[1], b.mean_strain[2]);
   }
-  if (summary.energy_initial > 0.0) {
-    log->info("energy (kinetic + strain): {:.6g} J at the start, {:.6g} J at the end, drift {:+.3g} %",
-              summary.energy_initial, summary.energy_final, 100.0 * summary.energy_drift());
-  }
+  log->info("energy at the end: kinetic {:.6g} J, stored {:.6g} J, dissipated {:.6g} J; work done by gravity "
+            "{:.6g} J, by the constraints {:.6g} J, by the expansion strains {:.6g} J; balance error {:.3g} of the "
+            "largest energy present",
+            summary.kinetic_energy, summary.stored_energy, summary.dissipated_energy, summary.gravity_work,
+            summary.boundary_work, summary.expansion_work, summary.energy_error);
   for (const auto& [name, value] : summary.errors) {
     log->info("error against the {} reference: {} = {:.4g}", reference->type(), name, value);
   }

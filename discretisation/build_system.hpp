@@ -62,6 +62,7 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
   system.grid = Grid<D>(origin, h, cells);
   if constexpr (Shape::gradient_jumps) system.grid.stiffness.assign(system.grid.node_count(), 0.0);
   system.blocks = BlockLayout<D, Shape>(cells);
+  system.block_energy.assign(system.blocks.block_count, BlockEnergy{});
   for (const auto& m : spec.materials) system.materials.push_back(m.model);
   for (int d = 0; d < D; ++d) system.gravity[d] = spec.gravity[d];
   system.flip_fraction = spec.flip_fraction;

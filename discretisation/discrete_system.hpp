@@ -21,7 +21,7 @@ namespace flowmpm {
 // Prescribed velocity of one axis on a set of nodes, and the reaction: the
 // force the constraint applied on the body along that axis in the last
 // step (N; per unit thickness in 2D, N/m, and per unit cross-section in 1D,
-// N/m^2).
+// N/m^2). Energies likewise: J, J/m in 2D, J/m^2 in 1D.
 struct NodeConstraint {
   std::string name;
   std::vector<std::size_t> nodes;
@@ -29,6 +29,7 @@ struct NodeConstraint {
   TimeFunction velocity;  // m/s
   int mirror_plane = -1;  // index into mirror_planes when the set is one
   double reaction = 0.0;
+  double work = 0.0;  // J: the reaction's work on the body since t = 0, sum of reaction V dt
 };
 
 // A constrained plane at the edge of the material, for shape functions that
@@ -97,6 +98,22 @@ struct StepFlags {
   }
 };
 
+// A step's energy sums over the particles of one block (tasks/g2p.hpp),
+// added block by block in a fixed order (engine/energy_balance.hpp) so that
+// they do not depend on the thread count.
+struct BlockEnergy {
+  double kinetic = 0.0;         // sum m v^2 / 2 after the step (J)
+  double gravity_work = 0.0;    // sum m g . dx over the step (J)
+  double expansion_work = 0.0;  // -sum V sigma : d eps_expansion over the step (J)
+};
+
+// The work done on the bodies since t = 0 (J), for the energy balance.
+struct WorkDone {
+  double gravity = 0.0;    // by gravity: the fall of the potential energy
+  double boundary = 0.0;   // by the velocity constraints' reactions
+  double expansion = 0.0;  // by the expansion strains (thermal, solvent) against the stress
+};
+
 template <int D, class Shape>
 struct DiscreteSystem {
   // 3D, plane strain or plane stress (2D), uniaxial stress (1D).
@@ -119,6 +136,10 @@ struct DiscreteSystem {
   std::int64_t step = 0;
   std::int64_t sorts = 0;  // particle sorts so far (the first at set-up)
   StepFlags flags;
+
+  std::vector<BlockEnergy> block_energy;  // per block of `blocks`, this step's sums
+  double kinetic_energy = 0.0;            // after the last step (J)
+  WorkDone work;
 
   std::size_t particle_count() const {
     std::size_t n = 0;

@@ -1,5 +1,5 @@
-// What the time series and the summary report of a system's state: kinetic
-// and stored energy, per body the volume-weighted mean stress and strain,
+// What the time series and the summary report of a system's state: the
+// energy balance, per body the volume-weighted mean stress and strain,
 // and the reactions of the velocity constraints.
 // Serial, in particle order, so the numbers do not depend on the thread count.
 #pragma once
@@ -29,8 +29,17 @@ struct Reaction {
 struct Diagnostics {
   std::int64_t step = 0;
   double time = 0.0;            // s
-  double kinetic_energy = 0.0;  // J (per unit thickness in 2D, cross-section in 1D)
-  double strain_energy = 0.0;   // J: the materials' stored (recoverable) energy
+  // Energy balance (engine/energy_balance.hpp), J (per unit thickness in 2D,
+  // per unit cross-section in 1D).
+  double kinetic_energy = 0.0;
+  double stored_energy = 0.0;      // the materials' recoverable energy
+  double dissipated_energy = 0.0;  // plastic work, damage
+  WorkDone work;                   // done on the bodies since t = 0
+  // kinetic + stored + dissipated - the work done: constant but for the
+  // scheme's error.
+  double energy_balance() const {
+    return kinetic_energy + stored_energy + dissipated_energy - work.gravity - work.boundary - work.expansion;
+  }
   std::vector<BodyMeans> bodies;     // per body of the spec
   std::vector<Reaction> reactions;   // per constrained node set and axis
 };
@@ -60,12 +69,15 @@ Diagnostics diagnostics(const DiscreteSystem<D, Shape>& system, std::size_t body
           const auto& states = std::get<StateArray<M>>(b.states);
           const typename M::State none{};
           for (std::size_t p = 0; p < b.size(); ++p) {
-            row.strain_energy +=
-                b.volume[p] * model.stored_energy(states.empty() ? none : states[p], b.stress[p], b.strain[p]);
+            const auto& state = states.empty() ? none : states[p];
+            row.stored_energy += b.volume[p] * model.stored_energy(state, b.stress[p], b.strain[p]);
+            if constexpr (requires { model.dissipated_energy(state); })
+              row.dissipated_energy += b.volume[p] * model.dissipated_energy(state);
           }
         },
         system.materials[b.material]);
   }
+  row.work = system.work;
   for (const NodeConstraint& c : system.constraints) row.reactions.push_back({c.name, c.axis, c.reaction});
   for (std::size_t i = 0; i < body_count; ++i) {
     for (int k = 0; k < 6; ++k) {

@@ -12,6 +12,7 @@
 #include "core/errors.hpp"
 #include "discretisation/build_system.hpp"
 #include "engine/diagnostics.hpp"
+#include "engine/energy_balance.hpp"
 #include "engine/schemes.hpp"
 #include "engine/take_snapshot.hpp"
 #include "engine/step_graph.hpp"
@@ -56,26 +57,35 @@ class Simulation {
     take_snapshot(system_, names, s);
   }
 
-  // Sets the system's largest particle speed (it is measured during each
-  // step; this measures it outside one, e.g. at the start).
+  // Sets the system's largest particle speed and kinetic energy (they are
+  // measured during each step; this measures them outside one, e.g. at the
+  // start).
   void measure_speed() {
     system_.max_speed_sq = 0.0;
-    for (const auto& b : system_.batches)
-      for (const auto& v : b.v) system_.max_speed_sq = std::max(system_.max_speed_sq, v.squaredNorm());
-  }
-
-  // Where the fastest particle is and how fast it moves, for messages.
-  std::string fastest_particle() const {
-    double best = -1.0;
-    Vec<D> x = Vec<D>::Zero();
+    system_.kinetic_energy = 0.0;
     for (const auto& b : system_.batches) {
       for (std::size_t p = 0; p < b.size(); ++p) {
-        if (!(b.v[p].squaredNorm() <= best)) best = b.v[p].squaredNorm(), x = b.x[p];
+        system_.max_speed_sq = std::max(system_.max_speed_sq, b.v[p].squaredNorm());
+        system_.kinetic_energy += 0.5 * b.mass[p] * b.v[p].squaredNorm();
+      }
+    }
+  }
+
+  // Where the fastest particle is, of which body, and how fast it moves,
+  // for messages.
+  std::string fastest_particle(const std::vector<std::string>& body_names) const {
+    double best = -1.0;
+    Vec<D> x = Vec<D>::Zero();
+    int body = 0;
+    for (const auto& b : system_.batches) {
+      for (std::size_t p = 0; p < b.size(); ++p) {
+        if (!(b.v[p].squaredNorm() <= best)) best = b.v[p].squaredNorm(), x = b.x[p], body = b.body;
       }
     }
     std::ostringstream s;
     s.precision(6);
-    s << "a particle at " << position_text<D>(x) << " moves at " << std::sqrt(best) << " m/s";
+    s << "a particle of body '" << body_names.at(body) << "' at " << position_text<D>(x) << " moves at "
+      << std::sqrt(best) << " m/s";
     return s.str();
   }
 
@@ -93,6 +103,7 @@ class Simulation {
   void finish_step(RunStep&& run_step) {
     if (system_.flags.resort_needed) sort_particles(system_);
     run_step();
+    add_step_energy(system_);
     if (system_.flags.failed) {
       std::ostringstream s;
       s.precision(6);

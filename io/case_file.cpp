@@ -171,6 +171,9 @@ void read_analysis(TableReader t, Case& c) {
   }
   c.guard_speed_factor = t.number_or("guard_speed_factor", 10.0);
   t.require(c.guard_speed_factor > 1.0, "guard_speed_factor", "a factor > 1 on the fastest wave speed");
+  c.guard_energy_factor = t.number_or("guard_energy_factor", 2.0);
+  t.require(c.guard_energy_factor > 1.0, "guard_energy_factor",
+            "a factor > 1 on the initial energy plus the work done on the bodies");
   c.guard_every = t.integer_or("guard_every", 10);
   t.require(c.guard_every >= 0, "guard_every", "a number of steps >= 0 (0: keep no last good state)");
   s.gravity = vector_of(t, "gravity", s.dimension);

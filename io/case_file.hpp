@@ -30,10 +30,12 @@ struct Case {
   double cfl = 0.5;            // with dt_auto
   std::int64_t steps = 0;      // 0 with dt_auto: run until end_time
   double end_time = 0.0;       // s
-  // Blow-up guard: a particle faster than guard_speed_factor times the
-  // fastest wave speed, or a non-finite value, stops the run; the state is
-  // kept every guard_every steps (0: never) so that the last good one can
-  // be written.
+  // Blow-up guard: a kinetic energy above guard_energy_factor times the
+  // initial energy plus the work done on the bodies (checked every step), a
+  // particle faster than guard_speed_factor times the fastest wave speed, or
+  // a non-finite value, stops the run; the state is kept every guard_every
+  // steps (0: never) so that the last good one can be written.
+  double guard_energy_factor = 2.0;
   double guard_speed_factor = 10.0;
   std::int64_t guard_every = 10;
   OutputSpec output;

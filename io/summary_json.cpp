@@ -47,9 +47,13 @@ std::string summary_json(const RunSummary& s) {
   field("output_seconds", number(s.output_seconds));
   field("reference_seconds", number(s.reference_seconds));
   field("particle_steps_per_second", number(s.particle_steps_per_second));
-  field("energy_initial", number(s.energy_initial));
-  field("energy_final", number(s.energy_final));
-  field("energy_drift", number(s.energy_drift()));
+  field("kinetic_energy", number(s.kinetic_energy));
+  field("stored_energy", number(s.stored_energy));
+  field("dissipated_energy", number(s.dissipated_energy));
+  field("gravity_work", number(s.gravity_work));
+  field("boundary_work", number(s.boundary_work));
+  field("expansion_work", number(s.expansion_work));
+  field("energy_error", number(s.energy_error));
 
   out += "  \"bodies\": [";
   for (std::size_t i = 0; i < s.bodies.size(); ++i) {

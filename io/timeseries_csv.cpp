@@ -37,7 +37,9 @@ TimeseriesCsv::TimeseriesCsv(const std::filesystem::path& path, const std::vecto
   errno = 0;
   out_.open(path, std::ios::out | std::ios::trunc);
   if (!out_) fail("cannot open", path_);
-  std::string header = "step,time,kinetic_energy,strain_energy";
+  std::string header =
+      "step,time,kinetic_energy,stored_energy,dissipated_energy,gravity_work,boundary_work,expansion_work,"
+      "energy_balance_error";
   for (const std::string& name : body_names)
     for (const char* quantity : {".stress_", ".strain_"})
       for (const char* component : voigt_component_names)
@@ -50,7 +52,7 @@ TimeseriesCsv::TimeseriesCsv(const std::filesystem::path& path, const std::vecto
     fail("cannot write", path_);
 }
 
-void TimeseriesCsv::write(const Diagnostics& row, const std::vector<double>& errors) {
+void TimeseriesCsv::write(const Diagnostics& row, double balance_error, const std::vector<double>& errors) {
   if (row.bodies.size() != body_count_)
     throw std::invalid_argument("timeseries row for " + path_ + " has " +
                                 std::to_string(row.bodies.size()) + " bodies, expected " +
@@ -66,7 +68,9 @@ void TimeseriesCsv::write(const Diagnostics& row, const std::vector<double>& err
     line += ',';
     append_exact(line, value);
   };
-  for (const double value : {row.time, row.kinetic_energy, row.strain_energy}) add(value);
+  for (const double value : {row.time, row.kinetic_energy, row.stored_energy, row.dissipated_energy,
+                             row.work.gravity, row.work.boundary, row.work.expansion, balance_error})
+    add(value);
   for (const BodyMeans& body : row.bodies)
     for (const auto* values : {&body.stress, &body.strain})
       for (const double value : *values) add(value);

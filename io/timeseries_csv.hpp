@@ -1,5 +1,7 @@
-// timeseries.csv: one row per recorded step: time, kinetic and strain energy,
-// for each body the mean stress and strain (Voigt order, tensor shear), the
+// timeseries.csv: one row per recorded step: time, the energy balance's
+// terms (kinetic, stored and dissipated energy, the work of gravity, of the
+// constraints and of the expansion strains, all J) and its error (J: the
+// change of the balance since the start), for each body the mean stress and strain (Voigt order, tensor shear), the
 // reaction of each constrained node set along each constrained axis
 // (columns reaction.<set>.<axis>), and the error norms of a reference
 // solution so far (columns error.<name>).
@@ -25,9 +27,9 @@ class TimeseriesCsv {
   // Diagnostics::reactions (reaction_names()).
   TimeseriesCsv(const std::filesystem::path& path, const std::vector<std::string>& body_names,
                 const std::vector<std::string>& reactions = {}, const std::vector<std::string>& error_names = {});
-  // One row: the diagnostics of a step and the error norms so far, in the
-  // order of the error names.
-  void write(const Diagnostics& row, const std::vector<double>& errors = {});
+  // One row: the diagnostics of a step, the energy balance's error (J) and
+  // the error norms so far, in the order of the error names.
+  void write(const Diagnostics& row, double balance_error, const std::vector<double>& errors = {});
 
  private:
   std::ofstream out_;

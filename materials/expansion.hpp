@@ -12,6 +12,7 @@
 #include <Eigen/Core>
 
 #include "core/time_function.hpp"
+#include "core/voigt.hpp"
 #include "materials/axis_values.hpp"
 #include "materials/material_input.hpp"
 #include "materials/transport_properties.hpp"
@@ -52,21 +53,38 @@ struct Expansion {
     return th;
   }
 
-  // The increment of the isotropic expansion strain over the increment,
-  // alpha d(T - T_ref) + beta dc, for the rate-form isotropic models.
-  double isotropic_step(const MaterialInput& in) const {
-    double th = 0.0;
+  // The changes of T - T_ref and of c over the increment.
+  double temperature_step_of(const MaterialInput& in) const {
+    return temperature_change ? (*temperature_change)(in.t) - (*temperature_change)(in.t - in.dt)
+                              : in.temperature_step;
+  }
+  double concentration_step_of(const MaterialInput& in) const {
+    return concentration ? (*concentration)(in.t) - (*concentration)(in.t - in.dt) : in.concentration_step;
+  }
+
+  // The change of the expansion strain over the increment, alpha d(T - T_ref)
+  // + beta dc along the material axes.
+  Eigen::Vector3d strain_step(const MaterialInput& in) const {
+    Eigen::Vector3d step = Eigen::Vector3d::Zero();
     if (thermal) {
-      const double dT = temperature_change ? (*temperature_change)(in.t) - (*temperature_change)(in.t - in.dt)
-                                           : in.temperature_step;
-      th += alpha[0] * dT;
+      const double dT = temperature_step_of(in);
+      for (int i = 0; i < 3; ++i) step[i] += alpha[i] * dT;
     }
     if (solvent) {
-      const double dc = concentration ? (*concentration)(in.t) - (*concentration)(in.t - in.dt)
-                                      : in.concentration_step;
-      th += beta[0] * dc;
+      const double dc = concentration_step_of(in);
+      for (int i = 0; i < 3; ++i) step[i] += beta[i] * dc;
     }
-    return th;
+    return step;
+  }
+
+  // Its isotropic value, for the rate-form isotropic models.
+  double isotropic_step(const MaterialInput& in) const { return strain_step(in)[0]; }
+
+  // The work done per unit volume by the isotropic expansion over the
+  // increment against the stress sigma (J/m^3): -tr(sigma) th.
+  double isotropic_work(const Voigt& sigma, const MaterialInput& in) const {
+    if (!any()) return 0.0;
+    return -(sigma[0] + sigma[1] + sigma[2]) * isotropic_step(in);
   }
 
   // Reads `alpha` with its driver and `beta` with its, laid out per

@@ -64,6 +64,12 @@ struct LinearElastic {
     for (int i = 0; i < 3; ++i) deps[i] += th;
   }
 
+  // Work done on the body by the isotropic expansion over one increment per
+  // unit volume (J/m^3), -tr(sigma) th, for the energy balance.
+  double expansion_work(const State&, const Voigt& sigma, const MaterialInput& in) const {
+    return parameters.expansion.isotropic_work(sigma, in);
+  }
+
   // Strain energy per unit volume: sigma : eps / 2 (all of the strain is
   // elastic); with expansion, sigma : C^-1 : sigma / 2 = p^2 / (2 K) +
   // s : s / (4 mu), the elastic part only.

@@ -12,10 +12,14 @@
 //   double wave_speed() const;                       // fastest wave, m/s (stable dt)
 //   const TransportProperties& transport() const;    // heat capacity, conductivity,
 //                                                    // diffusivity, T_ref (transport_properties.hpp)
-// optionally named state variables for output (materials/state_variable.hpp),
-// and, for models with material axes (optional):
-//   Eigen::Quaterniond material_axes(const State&) const;  // R, material to global: the
-//                                                    // conductivity and diffusivity turn with it
+// and optionally
+//   named state variables for output (materials/state_variable.hpp);
+//   double dissipated_energy(const State&) const;    // J/m^3 dissipated so far (plastic work, damage)
+//   double expansion_work(const State&, const Voigt& sigma, const MaterialInput&) const;
+//                                                    // J/m^3 done on the body: -sigma : d eps_expansion
+//                                                    // for the energy balance (engine/energy_balance.hpp);
+//   Eigen::Quaterniond material_axes(const State&) const;  // models with material axes: R, material
+//                                                    // to global; the conductivity and diffusivity turn with it
 // `update` is pure apart from its outputs: stress, state, and for reduced
 // stress states the out-of-plane strain components of deps. MaterialInput
 // carries the particle's temperature change and concentration when the

@@ -130,6 +130,19 @@ struct Orthotropic {
     }
   }
 
+  // Work done on the body by the expansion strains over one increment per
+  // unit volume (J/m^3): -sigma_m . (th(t) - th(t - dt)) (th driven by the
+  // uniform functions or the particle's own T and c), sigma_m the normal
+  // stresses in material axes (the expansion strains have no shear). Held
+  // fully, the strain th becomes elastic strain -th: the stored energy
+  // grows by what the expansion did, -sigma : d th.
+  double expansion_work(const State& state, const Voigt& sigma, const MaterialInput& in) const {
+    if (!parameters.expansion.any()) return 0.0;
+    const Voigt s = to_material(state.axes.toRotationMatrix(), sigma);
+    const Eigen::Vector3d d_th = parameters.expansion.strain_step(in);
+    return -(s[0] * d_th[0] + s[1] * d_th[1] + s[2] * d_th[2]);
+  }
+
   // Elastic strain energy per unit volume, sigma_m : S : sigma_m / 2 with
   // sigma_m the stress in material axes: the expansion strains store none.
   double stored_energy(const State& state, const Voigt& sigma, const Voigt&) const {

@@ -145,6 +145,8 @@ struct StrainSoftening {
   double stored_energy(const State& state, const Voigt& sigma, const Voigt&) const {
     return 0.5 * double_contraction(sigma, state.eps);
   }
+  // Energy dissipated per unit volume by damage so far (J/m^3).
+  double dissipated_energy(const State& state) const { return state.dissipated; }
 };
 
 }  // namespace flowmpm

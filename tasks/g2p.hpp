@@ -30,9 +30,11 @@ struct TransportedInput {
   double reference_temperature = 0.0;  // K
 };
 
-// The material update of particle p for its velocity gradient L (g2p_stress).
+// The material update of particle p for its velocity gradient L
+// (g2p_stress). Returns the work done on it by its expansion strains over
+// the step (J), -V sigma_mid : d eps_expansion, for models with expansion.
 template <int D, class Shape, StressState Kind, class MaterialModel>
-[[gnu::always_inline]] inline void update_particle_stress(DiscreteSystem<D, Shape>& system, ParticleBatch<D>& b, std::size_t p,
+[[gnu::always_inline]] inline double update_particle_stress(DiscreteSystem<D, Shape>& system, ParticleBatch<D>& b, std::size_t p,
                                                          const double (&L)[D][D], const MaterialModel& material,
                                                          typename MaterialModel::State& state,
                                                          const TransportedInput& transported) {
@@ -54,13 +56,23 @@ template <int D, class Shape, StressState Kind, class MaterialModel>
     input.concentration = transported.concentration[p];
     input.concentration_step = transported.concentration_step[p];
   }
-  material.template update<Kind>(state, b.stress[p], deps, input);
+  double expansion_work = 0.0;
+  if constexpr (requires { material.expansion_work(state, b.stress[p], input); }) {
+    const Voigt before = b.stress[p];
+    material.template update<Kind>(state, b.stress[p], deps, input);
+    Voigt mid;
+    for (int i = 0; i < 6; ++i) mid[i] = 0.5 * (before[i] + b.stress[p][i]);
+    expansion_work = b.volume[p] * material.expansion_work(state, mid, input);
+  } else {
+    material.template update<Kind>(state, b.stress[p], deps, input);
+  }
   if (!std::isfinite(b.stress[p][0] + b.stress[p][1] + b.stress[p][2] + b.stress[p][3] + b.stress[p][4] +
                      b.stress[p][5])) {
     system.flags.fail("a particle at " + position_text<D>(b.x[p]) + ": its stress is not finite");
   }
   for (int i = 0; i < 6; ++i) b.strain[p][i] += deps[i];
   b.volume[p] *= 1.0 + deps[0] + deps[1] + deps[2];
+  return expansion_work;
 }
 
 // Calls f(update) with update(p, L) the material update of `b`'s particles:
@@ -85,8 +97,8 @@ void with_stress_update(DiscreteSystem<D, Shape>& system, ParticleBatch<D>& b, F
         auto for_state = [&]<StressState Kind>() {
           typename M::State no_state{};
           f([&](std::size_t p, const double(&L)[D][D]) {
-            update_particle_stress<D, Shape, Kind>(system, b, p, L, material, states.empty() ? no_state : states[p],
-                                                   transported);
+            return update_particle_stress<D, Shape, Kind>(system, b, p, L, material,
+                                                          states.empty() ? no_state : states[p], transported);
           });
         };
         if constexpr (D == 3) {
@@ -132,6 +144,7 @@ void g2p(DiscreteSystem<D, Shape>& system) {
       stay_hi[d] = bc[d] * Layout::block_cells + Layout::block_cells - 2 + Layout::drift_limit;
     }
     double block_max_sq = 0.0;
+    BlockEnergy energy;  // this segment's sums
     auto particles = [&](auto&& update_stress) {
       for (std::uint32_t p = first; p < last; ++p) {
         const Stencil<D, Shape, Stress> s(grid, b.x[p], b.half_width);
@@ -157,7 +170,7 @@ void g2p(DiscreteSystem<D, Shape>& system) {
           dv[i] = sum(dv_sum[i]);
           for (int j = 0; j < D; ++j) L[i][j] = sum(L_sum[i][j]);
         }
-        if constexpr (Stress) update_stress(p, L);
+        if constexpr (Stress) energy.expansion_work += update_stress(p, L);
         if constexpr (Motion) {
           const Vec<D> x_new = b.x[p] + dt * v_grid;
           // A particle must stay where its stencil has nodes and may cross at
@@ -187,6 +200,8 @@ void g2p(DiscreteSystem<D, Shape>& system) {
                                                  : ", more than one cell in one step"));
             continue;
           }
+          energy.gravity_work += b.mass[p] * system.gravity.dot(x_new - b.x[p]);
+          energy.kinetic += 0.5 * b.mass[p] * v_new.squaredNorm();
           b.v[p] = v_new;
           b.x[p] = x_new;
           block_max_sq = std::max(block_max_sq, v_new.squaredNorm());
@@ -197,8 +212,15 @@ void g2p(DiscreteSystem<D, Shape>& system) {
     if constexpr (Stress) {
       with_stress_update(system, b, particles);
     } else {
-      particles([](std::size_t, const double(&)[D][D]) {});
+      particles([](std::size_t, const double(&)[D][D]) { return 0.0; });
     }
+    // Only this task touches the block: its segments add up in batch order.
+    BlockEnergy& sums = system.block_energy[block];
+    if constexpr (Motion) {
+      sums.kinetic += energy.kinetic;
+      sums.gravity_work += energy.gravity_work;
+    }
+    if constexpr (Stress) sums.expansion_work += energy.expansion_work;
     double seen = max_speed_sq.load(std::memory_order_relaxed);
     while (block_max_sq > seen && !max_speed_sq.compare_exchange_weak(seen, block_max_sq)) {
     }

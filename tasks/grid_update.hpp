@@ -76,6 +76,7 @@ void measure_reactions(DiscreteSystem<D, Shape>& system) {
       }
     }
     c.reaction = J / dt;
+    c.work += J * c.velocity(system.t + dt);  // the reaction's power at the prescribed velocity
   }
 }
 

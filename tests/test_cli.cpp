@@ -337,7 +337,7 @@ TEST_CASE("a valid run writes its results, and runs again over them") {
 
     const std::vector<std::string> rows = non_empty_lines(read_text(out / "timeseries.csv"));
     REQUIRE(!rows.empty());
-    CHECK(rows[0].rfind("step,time,kinetic_energy,strain_energy", 0) == 0);
+    CHECK(rows[0].rfind("step,time,kinetic_energy,stored_energy,dissipated_energy", 0) == 0);
     CHECK(rows.size() >= 3);  // the header and at least 2 data rows
 
     CHECK(contains(read_text(out / "results.xdmf"), "results.h5:/steps/"));

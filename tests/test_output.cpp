@@ -346,7 +346,10 @@ TEST_CASE("timeseries CSV: header, and rows that parse back exactly") {
   row.step = 42;
   row.time = 1.0 / 3.0;
   row.kinetic_energy = 2.0 / 3.0 * 1e-7;
-  row.strain_energy = std::nextafter(1.0, 2.0);
+  row.stored_energy = std::nextafter(1.0, 2.0);
+  row.dissipated_energy = 0.125;
+  row.work = {-1.0 / 7.0, 3e-300, 1e300};
+  const double balance_error = -1.0 / 9.0;
   BodyMeans block, ground;
   for (std::size_t i = 0; i < 6; ++i) {
     block.stress[i] = -1.0e5 / static_cast<double>(i + 3);
@@ -359,26 +362,29 @@ TEST_CASE("timeseries CSV: header, and rows that parse back exactly") {
   CHECK(reaction_names(row) == std::vector<std::string>{"base.y", "top.x"});
   {
     TimeseriesCsv csv(path, {"block", "ground"}, reaction_names(row));
-    csv.write(row);
+    csv.write(row, balance_error);
     // Flushed after each row: the file is complete while still open.
     const std::vector<std::string> lines = split(read_text(path), '\n');
     REQUIRE(lines.size() == 2);
     const std::vector<std::string> header = split(lines[0], ',');
-    REQUIRE(header.size() == 4 + 2 * 12 + 2);
-    CHECK(lines[0].rfind("step,time,kinetic_energy,strain_energy,block.stress_xx,"
+    REQUIRE(header.size() == 9 + 2 * 12 + 2);
+    CHECK(lines[0].rfind("step,time,kinetic_energy,stored_energy,dissipated_energy,gravity_work,boundary_work,"
+                         "expansion_work,energy_balance_error,block.stress_xx,"
                          "block.stress_yy,block.stress_zz,block.stress_yz,block.stress_xz,"
                          "block.stress_xy,block.strain_xx,",
                          0) == 0);
-    CHECK(header[15] == "block.strain_xy");
-    CHECK(header[16] == "ground.stress_xx");
-    CHECK(header[27] == "ground.strain_xy");
-    CHECK(header[28] == "reaction.base.y");
+    CHECK(header[20] == "block.strain_xy");
+    CHECK(header[21] == "ground.stress_xx");
+    CHECK(header[32] == "ground.strain_xy");
+    CHECK(header[33] == "reaction.base.y");
     CHECK(header.back() == "reaction.top.x");
 
     const std::vector<std::string> cells = split(lines[1], ',');
     REQUIRE(cells.size() == header.size());
     CHECK(cells[0] == "42");
-    std::vector<double> expected = {row.time, row.kinetic_energy, row.strain_energy};
+    std::vector<double> expected = {row.time,          row.kinetic_energy, row.stored_energy,
+                                    row.dissipated_energy, row.work.gravity, row.work.boundary,
+                                    row.work.expansion, balance_error};
     for (const BodyMeans& body : row.bodies) {
       expected.insert(expected.end(), body.stress.begin(), body.stress.end());
       expected.insert(expected.end(), body.strain.begin(), body.strain.end());
@@ -390,10 +396,10 @@ TEST_CASE("timeseries CSV: header, and rows that parse back exactly") {
     }
 
     row.reactions.pop_back();
-    CHECK_THROWS_AS(csv.write(row), std::invalid_argument);
+    CHECK_THROWS_AS(csv.write(row, balance_error), std::invalid_argument);
     row.reactions.push_back({"top", 0, 0.0});
     row.bodies.pop_back();
-    CHECK_THROWS_AS(csv.write(row), std::invalid_argument);
+    CHECK_THROWS_AS(csv.write(row, balance_error), std::invalid_argument);
   }
 
   const fs::path missing = dir.path / "no_such_dir" / "timeseries.csv";
