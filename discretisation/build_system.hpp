@@ -128,12 +128,15 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
     batch.strain.assign(n, Voigt{});
     if (system.heat.carried) {
       batch.temperature.assign(n, body.temperature);
-      batch.temperature_step.assign(n, 0.0);
+      // The change since the stress-free state, for the first stress
+      // update: T - T_ref (materials/expansion.hpp).
+      const auto& reference = transport(system.materials[body.material]).reference_temperature;
+      batch.temperature_step.assign(n, reference ? body.temperature - *reference : 0.0);
       least_heat_capacity = std::min(least_heat_capacity, rho * volume * transport(system.materials[body.material]).heat_capacity);
     }
     if (system.solvent.carried) {
       batch.concentration.assign(n, body.concentration);
-      batch.concentration_step.assign(n, 0.0);
+      batch.concentration_step.assign(n, body.concentration);  // since c = 0, stress free
     }
     batch.particle_length = std::pow(volume, 1.0 / D);
     for (int d = 0; d < D; ++d) batch.half_width[d] = 0.5 * body.spacing[d] * system.grid.inv_h[d];

@@ -39,52 +39,50 @@ struct Expansion {
     return concentration ? (*concentration)(in.t) : in.concentration;
   }
 
-  // alpha (T - T_ref) + beta c along the material axes, at the end of the increment.
-  Eigen::Vector3d strain(const MaterialInput& in) const {
+  // alpha dT + beta c along the material axes.
+  Eigen::Vector3d strain_for(double dT, double c) const {
     Eigen::Vector3d th = Eigen::Vector3d::Zero();
-    if (thermal) {
-      const double dT = temperature_change_at(in);
+    if (thermal)
       for (int i = 0; i < 3; ++i) th[i] += alpha[i] * dT;
-    }
-    if (solvent) {
-      const double c = concentration_at(in);
+    if (solvent)
       for (int i = 0; i < 3; ++i) th[i] += beta[i] * c;
-    }
     return th;
   }
 
-  // The changes of T - T_ref and of c over the increment.
-  double temperature_step_of(const MaterialInput& in) const {
-    return temperature_change ? (*temperature_change)(in.t) - (*temperature_change)(in.t - in.dt)
-                              : in.temperature_step;
-  }
-  double concentration_step_of(const MaterialInput& in) const {
-    return concentration ? (*concentration)(in.t) - (*concentration)(in.t - in.dt) : in.concentration_step;
+  // The expansion strain at the end of the increment.
+  Eigen::Vector3d strain(const MaterialInput& in) const {
+    return strain_for(temperature_change_at(in), concentration_at(in));
   }
 
-  // The change of the expansion strain over the increment, alpha d(T - T_ref)
-  // + beta dc along the material axes.
-  Eigen::Vector3d strain_step(const MaterialInput& in) const {
-    Eigen::Vector3d step = Eigen::Vector3d::Zero();
-    if (thermal) {
-      const double dT = temperature_step_of(in);
-      for (int i = 0; i < 3; ++i) step[i] += alpha[i] * dT;
-    }
-    if (solvent) {
-      const double dc = concentration_step_of(in);
-      for (int i = 0; i < 3; ++i) step[i] += beta[i] * dc;
-    }
-    return step;
+  // At its start. The first increment starts from the stress-free state
+  // (T_ref, c = 0), as the total form does: a uniform function then counts
+  // its value at t = 0, a particle its initial offset (MaterialInput).
+  Eigen::Vector3d strain_at_start(const MaterialInput& in) const {
+    return strain_for(temperature_change ? at_start(*temperature_change, in) : in.temperature_change - in.temperature_step,
+                      concentration ? at_start(*concentration, in) : in.concentration - in.concentration_step);
   }
 
-  // Its isotropic value, for the rate-form isotropic models.
-  double isotropic_step(const MaterialInput& in) const { return strain_step(in)[0]; }
+  // The isotropic increment alpha d(T - T_ref) + beta dc over the increment,
+  // for the rate-form isotropic models.
+  double isotropic_step(const MaterialInput& in) const {
+    const double dT = temperature_change ? (*temperature_change)(in.t) - at_start(*temperature_change, in)
+                                         : in.temperature_step;
+    const double dc = concentration ? (*concentration)(in.t) - at_start(*concentration, in) : in.concentration_step;
+    return strain_for(dT, dc)[0];
+  }
 
   // The work done per unit volume by the isotropic expansion over the
   // increment against the stress sigma (J/m^3): -tr(sigma) th.
   double isotropic_work(const Voigt& sigma, const MaterialInput& in) const {
     if (!any()) return 0.0;
     return -(sigma[0] + sigma[1] + sigma[2]) * isotropic_step(in);
+  }
+
+  // A uniform function's value at the start of the increment; 0, the
+  // stress-free state, before the first.
+  static double at_start(const TimeFunction& f, const MaterialInput& in) {
+    const double start = in.t - in.dt;
+    return start > 0.0 ? f(start) : 0.0;
   }
 
   // Reads `alpha` with its driver and `beta` with its, laid out per

@@ -23,9 +23,11 @@ struct MaterialInput {
   // expansion take them from here unless they are driven by a uniform
   // function of time (materials/expansion.hpp).
   double temperature_change = 0.0;  // T - T_ref at the end of the increment (K)
-  double temperature_step = 0.0;    // change of T over the increment (K)
+  // The changes since the last update (since the stress-free state, T_ref
+  // and c = 0, before the first): what the rate-form models subtract.
+  double temperature_step = 0.0;    // change of T (K)
   double concentration = 0.0;       // c at the end of the increment (weight fraction)
-  double concentration_step = 0.0;  // change of c over the increment
+  double concentration_step = 0.0;  // change of c
 };
 
 struct ParticleInit {

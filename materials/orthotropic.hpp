@@ -139,7 +139,7 @@ struct Orthotropic {
   double expansion_work(const State& state, const Voigt& sigma, const MaterialInput& in) const {
     if (!parameters.expansion.any()) return 0.0;
     const Voigt s = to_material(state.axes.toRotationMatrix(), sigma);
-    const Eigen::Vector3d d_th = parameters.expansion.strain_step(in);
+    const Eigen::Vector3d d_th = parameters.expansion.strain(in) - parameters.expansion.strain_at_start(in);
     return -(s[0] * d_th[0] + s[1] * d_th[1] + s[2] * d_th[2]);
   }
 

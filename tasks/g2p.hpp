@@ -24,9 +24,13 @@ namespace detail {
 
 // A batch's particle temperatures and concentrations for the material
 // update (null when the scene carries none), and its material's T_ref.
+// The steps are the changes since the last stress update (since the
+// stress-free state before the first): the update takes and clears them.
 struct TransportedInput {
-  const double *temperature = nullptr, *temperature_step = nullptr;
-  const double *concentration = nullptr, *concentration_step = nullptr;
+  const double* temperature = nullptr;
+  double* temperature_step = nullptr;
+  const double* concentration = nullptr;
+  double* concentration_step = nullptr;
   double reference_temperature = 0.0;  // K
 };
 
@@ -51,10 +55,12 @@ template <int D, class Shape, StressState Kind, class MaterialModel>
   if (transported.temperature) {
     input.temperature_change = transported.temperature[p] - transported.reference_temperature;
     input.temperature_step = transported.temperature_step[p];
+    transported.temperature_step[p] = 0.0;
   }
   if (transported.concentration) {
     input.concentration = transported.concentration[p];
     input.concentration_step = transported.concentration_step[p];
+    transported.concentration_step[p] = 0.0;
   }
   double expansion_work = 0.0;
   if constexpr (requires { material.expansion_work(state, b.stress[p], input); }) {

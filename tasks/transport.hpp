@@ -13,7 +13,10 @@
 //                     carries; no flux elsewhere: insulated);
 //   transport_update: T_I' = T_I + dt Q_I / (mC)_I, then the prescribed
 //                     T_I' = T_b(t + dt), and the increment dT_I = T_I' - P_I;
-//   transport_g2p:    T_p += sum_I N_Ip dT_I (the increment, as FLIP).
+//   transport_g2p:    T_p += sum_I N_Ip dT_I (the increment, as FLIP); the
+//                     particle's step (its change since the last stress
+//                     update, which g2p_stress takes and clears) grows by
+//                     the same.
 // Prescribed nodes (our choice, checked by the slab's convergence rate in
 // tests/test_transport.cpp): there the increment is
 //   dT_I = T_b(t + dt) - T_b(t) + (R_I - P_I),
@@ -243,12 +246,12 @@ void transport_g2p(DiscreteSystem<D, Shape>& system) {
         if constexpr (Solvent) dc += N * load_nodes<Count>(solvent_change + n);
       });
       if constexpr (Heat) {
-        b.temperature_step[p] = sum(dT);
-        b.temperature[p] += b.temperature_step[p];
+        b.temperature_step[p] += sum(dT);
+        b.temperature[p] += sum(dT);
       }
       if constexpr (Solvent) {
-        b.concentration_step[p] = sum(dc);
-        b.concentration[p] += b.concentration_step[p];
+        b.concentration_step[p] += sum(dc);
+        b.concentration[p] += sum(dc);
       }
     }
   });

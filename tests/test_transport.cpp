@@ -350,6 +350,37 @@ TEST_CASE("isotropic expansion at a material point: free is stress free, held gi
   CHECK(p.state.eps_p == doctest::Approx(2e9 * 1e-5 * 50.0 / 2e9 - 5e5 / 2e9).epsilon(1e-9));
 }
 
+TEST_CASE("a body that starts away from its stress-free state is loaded by the offset, in every model") {
+  // The bar of thermal_stress_bar.toml held at both ends, starting at
+  // T_ref + 100 K with its ends held there: a uniform expansion that the
+  // held ends resist, so every interior node is in equilibrium from the
+  // first step and sigma_xx = -E alpha dT at once (to round-off). The
+  // rate-form linear_elastic sees the offset as its first increment, as
+  // the total-form orthotropic sees it in its total.
+  const std::vector<std::string> hot = {"bodies.0.temperature=393.15", "node_sets.0.temperature=393.15",
+                                        "node_sets.1.temperature=393.15", "analysis.end_time=0.04"};
+  const auto e = errors_of("verification/thermal_stress_bar.toml", hot);
+  CHECK(e.at("stress") < 1e-9);
+  CHECK(e.at("temperature") < 1e-12);
+  // A uniform temperature_change counts its value at t = 0 in the first
+  // increment (isotropic rate form) as in the total (orthotropic): both
+  // held in 1D carry -E alpha dT from the first step.
+  using testing::MaterialPoint;
+  const std::string uniform = "density = 1000.0\nalpha = 1e-5\ntemperature_change = 100.0\n";
+  const LinearElastic isotropic = std::get<LinearElastic>(testing::material_from_text(
+      "type = \"linear_elastic\"\nyoungs_modulus = 1e6\npoisson_ratio = 0.3\n" + uniform));
+  MaterialPoint<LinearElastic, StressState::uniaxial_stress> a(isotropic);
+  a.strain({0, 0, 0, 0, 0, 0}, 0.01);
+  CHECK(a.sigma[0] == doctest::Approx(-1e6 * 1e-5 * 100.0).epsilon(1e-12));
+  const Orthotropic orthotropic = std::get<Orthotropic>(testing::material_from_text(
+      "type = \"orthotropic\"\nEx = 1e6\nEy = 1e6\nEz = 1e6\nGxy = 4e5\nGxz = 4e5\nGyz = 4e5\n"
+      "nuxy = 0.3\nnuxz = 0.3\nnuyz = 0.3\ndensity = 1000.0\nalpha = [1e-5, 1e-5, 1e-5]\n"
+      "temperature_change = 100.0\n"));
+  MaterialPoint<Orthotropic, StressState::uniaxial_stress> b(orthotropic);
+  b.strain({0, 0, 0, 0, 0, 0}, 0.01);
+  CHECK(b.sigma[0] == doctest::Approx(a.sigma[0]).epsilon(1e-12));
+}
+
 TEST_CASE("bad transport input: one message naming the file, the line, the key and what was expected") {
   const std::string slab = text_of(testing::config("verification/slab_conduction.toml"));
   const std::string file = (std::filesystem::temp_directory_path() / "flowmpm-tests" / "transport_bad_input.toml").string();
