@@ -69,6 +69,7 @@ struct LinearElastic {
   double expansion_work(const State&, const Voigt& sigma, const MaterialInput& in) const {
     return parameters.expansion.isotropic_work(sigma, in);
   }
+  bool expands() const { return parameters.expansion.any(); }
 
   // Strain energy per unit volume: sigma : eps / 2 (all of the strain is
   // elastic); with expansion, sigma : C^-1 : sigma / 2 = p^2 / (2 K) +

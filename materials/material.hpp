@@ -18,6 +18,7 @@
 //   double expansion_work(const State&, const Voigt& sigma, const MaterialInput&) const;
 //                                                    // J/m^3 done on the body: -sigma : d eps_expansion
 //                                                    // for the energy balance (engine/energy_balance.hpp);
+//   bool expands() const;                            // false: the engine skips expansion_work
 //   Eigen::Quaterniond material_axes(const State&) const;  // models with material axes: R, material
 //                                                    // to global; the conductivity and diffusivity turn with it
 // `update` is pure apart from its outputs: stress, state, and for reduced

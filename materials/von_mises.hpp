@@ -221,6 +221,7 @@ struct VonMises {
   double expansion_work(const State&, const Voigt& sigma, const MaterialInput& in) const {
     return parameters.expansion.isotropic_work(sigma, in);
   }
+  bool expands() const { return parameters.expansion.any(); }
 
   // Plastic work per unit volume (J/m^3), the integral of sigma_Y(eps_p)
   // d eps_p (the radial return keeps the stress on the yield surface):

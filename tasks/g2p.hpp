@@ -36,8 +36,8 @@ struct TransportedInput {
 
 // The material update of particle p for its velocity gradient L
 // (g2p_stress). Returns the work done on it by its expansion strains over
-// the step (J), -V sigma_mid : d eps_expansion, for models with expansion.
-template <int D, class Shape, StressState Kind, class MaterialModel>
+// the step (J), -V sigma_mid : d eps_expansion, with `ExpansionWork`.
+template <int D, class Shape, StressState Kind, bool ExpansionWork, class MaterialModel>
 [[gnu::always_inline]] inline double update_particle_stress(DiscreteSystem<D, Shape>& system, ParticleBatch<D>& b, std::size_t p,
                                                          const double (&L)[D][D], const MaterialModel& material,
                                                          typename MaterialModel::State& state,
@@ -63,7 +63,7 @@ template <int D, class Shape, StressState Kind, class MaterialModel>
     transported.concentration_step[p] = 0.0;
   }
   double expansion_work = 0.0;
-  if constexpr (requires { material.expansion_work(state, b.stress[p], input); }) {
+  if constexpr (ExpansionWork) {
     const Voigt before = b.stress[p];
     material.template update<Kind>(state, b.stress[p], deps, input);
     Voigt mid;
@@ -100,12 +100,30 @@ void with_stress_update(DiscreteSystem<D, Shape>& system, ParticleBatch<D>& b, F
           transported.concentration = b.concentration.data();
           transported.concentration_step = b.concentration_step.data();
         }
+        // The expansion work, for models that can do it; a model that says
+        // it does not expand (expands()) skips it, its update alone as before.
         auto for_state = [&]<StressState Kind>() {
           typename M::State no_state{};
-          f([&](std::size_t p, const double(&L)[D][D]) {
-            return update_particle_stress<D, Shape, Kind>(system, b, p, L, material,
-                                                          states.empty() ? no_state : states[p], transported);
-          });
+          auto with_work = [&]<bool Work>() {
+            f([&](std::size_t p, const double(&L)[D][D]) {
+              return update_particle_stress<D, Shape, Kind, Work>(system, b, p, L, material,
+                                                                  states.empty() ? no_state : states[p], transported);
+            });
+          };
+          constexpr bool can_work = requires(const typename M::State& s, const Voigt& v, const MaterialInput& in) {
+            material.expansion_work(s, v, in);
+          };
+          if constexpr (!can_work) {
+            with_work.template operator()<false>();
+          } else if constexpr (requires { material.expands(); }) {
+            if (material.expands()) {
+              with_work.template operator()<true>();
+            } else {
+              with_work.template operator()<false>();
+            }
+          } else {
+            with_work.template operator()<true>();
+          }
         };
         if constexpr (D == 3) {
           for_state.template operator()<StressState::three_d>();
