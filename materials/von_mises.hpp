@@ -168,6 +168,26 @@ struct VonMises {
     return p * p / (2.0 * K) + double_contraction(s, s) / (4.0 * mu);
   }
 
+  // Work done on the body by the isotropic expansion over one increment per
+  // unit volume (J/m^3), -tr(sigma) th, for the energy balance.
+  double expansion_work(const State&, const Voigt& sigma, const MaterialInput& in) const {
+    return parameters.expansion.isotropic_work(sigma, in);
+  }
+  bool expands() const { return parameters.expansion.any(); }
+
+  // Plastic work per unit volume (J/m^3), the integral of sigma_Y(eps_p)
+  // d eps_p (the radial return keeps the stress on the yield surface):
+  // linear sigma_0 eps_p + H eps_p^2 / 2; power sigma_0 eps_0 / (n + 1)
+  // ((1 + eps_p / eps_0)^(n + 1) - 1).
+  double dissipated_energy(const State& state) const {
+    const Parameters& p = parameters;
+    if (p.hardening == Hardening::linear) {
+      return p.yield_stress * state.eps_p + 0.5 * p.hardening_modulus * state.eps_p * state.eps_p;
+    }
+    const double n1 = p.hardening_exponent + 1.0;
+    return p.yield_stress * p.reference_strain / n1 * (std::pow(1.0 + state.eps_p / p.reference_strain, n1) - 1.0);
+  }
+
  private:
   // The update for a mechanical strain increment: elastic trial and return.
   template <StressState Kind>
@@ -214,26 +234,6 @@ struct VonMises {
         state.eps_p += dep;
       }
     }
-  }
-
-  // Work done on the body by the isotropic expansion over one increment per
-  // unit volume (J/m^3), -tr(sigma) th, for the energy balance.
-  double expansion_work(const State&, const Voigt& sigma, const MaterialInput& in) const {
-    return parameters.expansion.isotropic_work(sigma, in);
-  }
-  bool expands() const { return parameters.expansion.any(); }
-
-  // Plastic work per unit volume (J/m^3), the integral of sigma_Y(eps_p)
-  // d eps_p (the radial return keeps the stress on the yield surface):
-  // linear sigma_0 eps_p + H eps_p^2 / 2; power sigma_0 eps_0 / (n + 1)
-  // ((1 + eps_p / eps_0)^(n + 1) - 1).
-  double dissipated_energy(const State& state) const {
-    const Parameters& p = parameters;
-    if (p.hardening == Hardening::linear) {
-      return p.yield_stress * state.eps_p + 0.5 * p.hardening_modulus * state.eps_p * state.eps_p;
-    }
-    const double n1 = p.hardening_exponent + 1.0;
-    return p.yield_stress * p.reference_strain / n1 * (std::pow(1.0 + state.eps_p / p.reference_strain, n1) - 1.0);
   }
 };
 

@@ -207,7 +207,7 @@ TEST_CASE("thermal stress: a free plate with a linear temperature across it bend
 }
 
 TEST_CASE("solvent diffusion with swelling: free bar and layer held across") {
-  // Concentration: second order as the slab (measured 1.13e-3 and 2.9e-4
+  // Concentration: second order as the slab (measured 1.15e-3 and 2.97e-4
   // at 32 and 64 cells; the layer 2.5e-3 at 20 cells). Strain and stress:
   // first order (measured bar 1.46 % and 0.73 %, layer 2.50 %).
   const auto bar = errors_of("verification/swelling_bar.toml");
