@@ -30,9 +30,20 @@ double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-std::string stored_fields(int dimension) {
+std::string stored_fields(int dimension, bool heat, bool solvent) {
   const std::string vec = dimension == 1 ? "scalar" : std::to_string(dimension) + "-vector";
-  return "x, v (" + vec + "), mass, volume, stress, strain (6 Voigt)";
+  return "x, v (" + vec + "), mass, volume, stress, strain (6 Voigt)" +
+         std::string(heat ? ", temperature and its step" : "") +
+         std::string(solvent ? ", concentration and its step" : "");
+}
+
+// With transport: both time-step limits and which one governs, for the log.
+std::string time_step_limits(const TimeStepLimit& limits) {
+  const DiffusionStep& diffusion = *limits.diffusion;
+  return fmt::format("wave limit {:.4g} s (material '{}'), {} diffusion limit {:.4g} s (material '{}', diffusivity "
+                     "{:.4g} m^2/s): the {} limit governs",
+                     limits.wave.dt(), limits.wave.material, diffusion.field, diffusion.dt, diffusion.material,
+                     diffusion.diffusivity, limits.diffusion_governs() ? "diffusion" : "wave");
 }
 
 // The run's logger: with `console`, the program's console output at the
@@ -61,9 +72,10 @@ std::shared_ptr<spdlog::logger> run_logger(const std::optional<std::filesystem::
 }
 
 template <int D, class Shape>
-void log_system(spdlog::logger& log, const Case& c, const DiscreteSystem<D, Shape>& system, const Scheme& scheme) {
+void log_system(spdlog::logger& log, const Case& c, const Simulation<D, Shape>& sim, const Scheme& scheme) {
+  const DiscreteSystem<D, Shape>& system = sim.system();
   log.info("model: {}D ({}), scheme {} [{}], shape function {}, velocity update {}{}", D,
-               stress_state_name(system.stress_state), scheme.label, scheme.wiring.describe(), Shape::name,
+           stress_state_name(system.stress_state), scheme.label, sim.graph().wiring().describe(), Shape::name,
                c.velocity_update,
                c.velocity_update == "blend" ? " (FLIP fraction " + std::to_string(system.flip_fraction) + ")" : "");
   std::string cells;
@@ -77,13 +89,28 @@ void log_system(spdlog::logger& log, const Case& c, const DiscreteSystem<D, Shap
                  c.system.bodies[b.body].name, b.size(), m.name, type_name(m.model), density(m.model),
                  wave_speed(m.model));
   }
-  log.info("particle fields stored: {}", stored_fields(D));
+  log.info("particle fields stored: {}", stored_fields(D, system.heat.carried, system.solvent.carried));
   for (const auto& k : system.constraints) {
     log.info("node set '{}': {} nodes, velocity prescribed along {}", k.name, k.nodes.size(),
                  "xyz"[k.axis]);
   }
+  if (system.heat.carried || system.solvent.carried) {
+    log.info("transport: {}{}{} on the grid, a branch of the step graph beside the momentum stages",
+             system.heat.carried ? "heat conduction" : "", system.heat.carried && system.solvent.carried ? " and " : "",
+             system.solvent.carried ? "solvent diffusion" : "");
+  }
+  for (const auto* field : {&system.heat, &system.solvent}) {
+    for (const auto& k : field->prescribed) {
+      log.info("node set '{}': {} nodes, {} prescribed", k.name, k.nodes.size(),
+               field == &system.heat ? "temperature" : "concentration");
+    }
+  }
+  for (const auto& f : system.surface_fluxes) {
+    log.info("surface flux '{}': {}{}", f.name, f.heat ? "heat" : "", f.solvent ? (f.heat ? " and solvent" : "solvent") : "");
+  }
   if (system.gravity.norm() > 0.0) log.info("gravity: {} m/s^2", system.gravity.norm());
-  const StableStep stable = stable_time_step(c.system, scheme);
+  const TimeStepLimit limits = time_step_limit(c.system, scheme);
+  const StableStep& stable = limits.wave;
   if (c.dt_auto) {
     log.info("time: dt automatic, CFL {} of h/c = {:.4g} s (the stable limit is {:.3g} h/c for {} with {} at {:.3g} "
              "particles per cell), to t = {:.6g} s",
@@ -94,6 +121,7 @@ void log_system(spdlog::logger& log, const Case& c, const DiscreteSystem<D, Shap
              c.dt, c.dt / stable.crossing, c.dt / stable.dt(), stable.factor, scheme.label, Shape::name,
              stable.particles_per_cell, c.steps, c.end_time);
   }
+  if (limits.diffusion) log.info("time-step limits: {}", time_step_limits(limits));
 }
 
 template <int D, class Shape>
@@ -115,7 +143,7 @@ RunSummary run(const Case& c, const RunOptions& options) {
                               options.log_to_console);
   log->info("case '{}' from {}, {} thread{}, output in {}", c.name, c.file.string(), options.threads,
             options.threads == 1 ? "" : "s", options.write_results ? dir.string() : "(none)");
-  log_system(*log, c, system, scheme);
+  log_system(*log, c, sim, scheme);
 
   RunSummary summary;
   summary.case_name = c.name;
@@ -265,10 +293,15 @@ RunSummary run(const Case& c, const RunOptions& options) {
     remedy += ", or scheme = \"musl\", or shape_function = \"gimp\" or \"bspline2\": linear shape functions "
               "with USL are the least stable pair where the material's edge moves (docs/STABILITY.md)";
   auto done = [&] { return c.dt_auto ? system.t >= c.end_time * (1.0 - 1e-12) : system.step >= c.steps; };
+  const std::optional<DiffusionStep> diffusion = diffusion_time_step(c.system);
+  const double diffusion_dt = diffusion ? c.cfl / stable.factor * diffusion->dt : 0.0;
   auto next_dt = [&] {
     if (!c.dt_auto) return c.dt;
-    // CFL condition with the particles' own speed added to the wave speed.
-    const double dt = c.cfl * system.grid.h.minCoeff() / (c_max + std::sqrt(system.max_speed_sq));
+    // CFL condition with the particles' own speed added to the wave speed,
+    // and the explicit diffusion limit (the same fraction of it as the CFL
+    // number is of the wave limit).
+    double dt = c.cfl * system.grid.h.minCoeff() / (c_max + std::sqrt(system.max_speed_sq));
+    if (diffusion) dt = std::min(dt, diffusion_dt);
     return std::min(dt, c.end_time - system.t);
   };
   sim.measure_speed();
@@ -358,7 +391,7 @@ void describe_case(const Case& c) {
     const Scheme& scheme = scheme_named(c.scheme);
     Simulation<D, Shape> sim(c.system, scheme.wiring, c.dt_auto ? 0.0 : c.dt);
     if (c.reference) c.reference->initialise(sim.system());
-    log_system(*spdlog::default_logger(), c, sim.system(), scheme);
+    log_system(*spdlog::default_logger(), c, sim, scheme);
   });
 }
 

@@ -18,10 +18,17 @@
 //   - the cost of one output step (the default fields to results.h5), in bytes and
 //     microseconds per particle, apart from the step rate.
 // Output steps are not part of this program (see README, output cost).
+// With --transport heat (or both: heat and solvent) the block conducts heat
+// (and diffuses solvent) from its base, held at 400 K (and c = 0.1), and
+// expands with it; the program then reports instead, per size, the rates
+// without transport, with the transport branch beside the momentum stages
+// (the engine's wiring) and with it run before them (one after the other),
+// the cost of transport per particle-step, and what running the branches
+// side by side gains.
 //
 //   build/bench/bench_throughput [--sizes 1e4,1e5,1e6] [--particle-steps N]
 //                                [--repeats R] [--shape linear|gimp|bspline2|bspline3]
-//                                [--csv FILE]
+//                                [--transport heat|both] [--csv FILE]
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -49,7 +56,7 @@ namespace {
 // The block: k x k x k cells of 8 particles each (2 per axis), resting on
 // the plane of nodes two cells above the grid's bottom, which is held fixed
 // (two cells of grid around the block leave room for every shape function).
-SystemSpec block_case(std::size_t target_particles, const std::string& shape) {
+SystemSpec block_case(std::size_t target_particles, const std::string& shape, const std::string& transport = "") {
   const int k = std::max(2, static_cast<int>(std::lround(std::cbrt(target_particles / 8.0))));
   const double h = 1.0 / k;  // a 1 m cube
   SystemSpec c;
@@ -60,18 +67,38 @@ SystemSpec block_case(std::size_t target_particles, const std::string& shape) {
   c.grid.cell_size = {h, h, h};
   c.grid.cells = {k + 4, k + 5, k + 4};
   c.gravity = {0.0, -9.81, 0.0};
-  c.materials.push_back({"elastic", LinearElastic(LinearElastic::Parameters{1000.0, 1e7, 0.3})});
+  LinearElastic::Parameters elastic;
+  elastic.density = 1000.0;       // kg/m^3
+  elastic.youngs_modulus = 1e7;   // Pa
+  elastic.poisson_ratio = 0.3;
+  if (!transport.empty()) {
+    // kappa = k / (rho C) = 1e-3 m^2/s: the wave limit governs dt at every size.
+    elastic.transport.heat_capacity = 1000.0;             // J/(kg K)
+    elastic.transport.conductivity.setConstant(1000.0);   // W/(m K)
+    elastic.transport.reference_temperature = 300.0;      // K
+    elastic.expansion.alpha.fill(1e-5);                   // 1/K
+    elastic.expansion.thermal = true;
+    if (transport == "both") {
+      elastic.transport.diffusivity.setConstant(1e-3);   // m^2/s
+      elastic.expansion.beta.fill(0.01);
+      elastic.expansion.solvent = true;
+    }
+  }
+  c.materials.push_back({"elastic", LinearElastic(elastic)});
   BodySpec body;
   body.name = "block";
   body.box_min = {0.0, 0.0, 0.0};
   body.box_max = {1.0, 1.0, 1.0};
   body.spacing = {h / 2, h / 2, h / 2};
+  body.temperature = 300.0;  // K, used with transport only
   c.bodies.push_back(body);
   NodeSetSpec base;
   base.name = "base";
   base.axis = 1;
   base.at = 0.0;
   for (int d = 0; d < 3; ++d) base.velocity[d] = TimeFunction{{{0.0, 0.0}}};
+  if (!transport.empty()) base.temperature = TimeFunction{{{0.0, 400.0}}};
+  if (transport == "both") base.concentration = TimeFunction{{{0.0, 0.1}}};
   c.node_sets.push_back(base);
   const StableStep stable = stable_time_step(c, scheme_named("usl"));
   c.dt = std::min(0.5 * stable.crossing, stable.dt());
@@ -123,10 +150,10 @@ struct Timing {
 };
 
 template <class Shape>
-Timing time_steps(const SystemSpec& c, int threads, bool serial, int steps) {
+Timing time_steps(const SystemSpec& c, int threads, bool serial, int steps, TransportBranch branch) {
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
   const auto t0 = Clock::now();
-  Simulation<3, Shape> sim(c, scheme_named("usl").wiring, c.dt);
+  Simulation<3, Shape> sim(c, scheme_named("usl").wiring, c.dt, {}, branch);
   Timing t;
   t.setup = std::chrono::duration<double>(Clock::now() - t0).count();
   t.particles = sim.system().particle_count();
@@ -156,7 +183,7 @@ double empty_graph_seconds_per_step() {
 
 // The bench's two measurements, compiled for one shape function.
 struct ShapeRunner {
-  Timing (*time_steps)(const SystemSpec&, int threads, bool serial, int steps);
+  Timing (*time_steps)(const SystemSpec&, int threads, bool serial, int steps, TransportBranch branch);
   std::pair<double, double> (*output_cost)(SystemSpec);
 };
 
@@ -167,6 +194,59 @@ ShapeRunner runner_named(const std::string& shape) {
     std::exit(1);
   }
   return with_shape_function(shape, []<class Shape>() { return ShapeRunner{&time_steps<Shape>, &output_cost<Shape>}; });
+}
+
+// The transport table: per size, the median rates (2 threads unless
+// stated) without transport, with the branch beside the momentum stages
+// and run before them; transport's cost per particle-step; the gain of the
+// branches side by side.
+void transport_table(const ShapeRunner& runner, const std::vector<double>& sizes, double particle_steps, int repeats,
+                     const std::string& shape, const std::string& transport, std::ofstream& csv) {
+  std::printf("3D elastic block on a fixed base under gravity, USL, %s shape functions, %s transport from the base;"
+              " medians of %d runs\n", shape.c_str(), transport == "both" ? "heat and solvent" : "heat", repeats);
+  std::printf("%10s %6s %10s %10s %10s %10s %10s %12s %12s %8s  %s\n", "particles", "steps", "plain 1t", "transp 1t",
+              "plain 2t", "beside 2t", "before 2t", "cost 1t", "cost 2t", "gain", "shares of the nodes (beside, 1 thread)");
+  std::printf("%10s %6s %10s %10s %10s %10s %10s %12s %12s %8s\n", "", "", "Mp-st/s", "Mp-st/s", "Mp-st/s", "Mp-st/s",
+              "Mp-st/s", "ns/p-step", "ns/p-step", "");
+  if (csv) {
+    csv << "particles,steps,rate_plain_1t,rate_transport_1t,rate_plain_2t,rate_beside_2t,rate_before_2t,"
+           "cost_ns_1t,cost_ns_2t,gain_beside_vs_before\n";
+  }
+  for (double size : sizes) {
+    const SystemSpec plain = block_case(static_cast<std::size_t>(size), shape);
+    const SystemSpec coupled = block_case(static_cast<std::size_t>(size), shape, transport);
+    const int steps = std::max(5, static_cast<int>(particle_steps / size));
+    std::vector<double> p1, t1, p2, beside, before;
+    std::vector<std::vector<double>> shares;
+    std::size_t n = 0;
+    std::vector<StageGroup> nodes;
+    for (int r = 0; r < repeats; ++r) {
+      p1.push_back(runner.time_steps(plain, 1, false, steps, TransportBranch::beside).rate);
+      const Timing one = runner.time_steps(coupled, 1, false, steps, TransportBranch::beside);
+      t1.push_back(one.rate);
+      p2.push_back(runner.time_steps(plain, 2, false, steps, TransportBranch::beside).rate);
+      beside.push_back(runner.time_steps(coupled, 2, false, steps, TransportBranch::beside).rate);
+      before.push_back(runner.time_steps(coupled, 2, false, steps, TransportBranch::before).rate);
+      n = one.particles;
+      shares.resize(one.node_share.size());
+      for (std::size_t i = 0; i < shares.size(); ++i) shares[i].push_back(one.node_share[i]);
+    }
+    nodes = step_wiring(scheme_named("usl").wiring, coupled).nodes;
+    const double mp1 = median(p1), mt1 = median(t1), mp2 = median(p2), mb = median(beside), ma = median(before);
+    const double cost1 = 1e9 * (1.0 / mt1 - 1.0 / mp1), cost2 = 1e9 * (1.0 / mb - 1.0 / mp2);
+    std::ostringstream stage_text;
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      stage_text << "[" << group_name(nodes[i]) << "] " << std::lround(100 * median(shares[i])) << "% ";
+    }
+    std::printf("%10zu %6d %10.2f %10.2f %10.2f %10.2f %10.2f %12.1f %12.1f %7.1f%%  %s\n", n, steps, mp1 / 1e6,
+                mt1 / 1e6, mp2 / 1e6, mb / 1e6, ma / 1e6, cost1, cost2, 100.0 * (mb / ma - 1.0),
+                stage_text.str().c_str());
+    std::fflush(stdout);
+    if (csv) {
+      csv << n << "," << steps << "," << mp1 << "," << mt1 << "," << mp2 << "," << mb << "," << ma << "," << cost1
+          << "," << cost2 << "," << (mb / ma - 1.0) << "\n";
+    }
+  }
 }
 
 std::vector<double> parse_sizes(const std::string& text) {
@@ -182,7 +262,7 @@ int main(int argc, char** argv) {
   std::vector<double> sizes{1e4, 1e5, 1e6};
   double particle_steps = 3e7;  // per measurement, so that each lasts ~1 s or more
   int repeats = 3;
-  std::string csv_path, shape = "linear";
+  std::string csv_path, shape = "linear", transport;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto next = [&] {
@@ -197,13 +277,27 @@ int main(int argc, char** argv) {
     else if (a == "--repeats") repeats = std::stoi(next());
     else if (a == "--shape") shape = next();
     else if (a == "--csv") csv_path = next();
+    else if (a == "--transport") {
+      transport = next();
+      if (transport != "heat" && transport != "both") {
+        std::cerr << "--transport: expected \"heat\" or \"both\", got '" << transport << "'\n";
+        return 1;
+      }
+    }
     else {
-      std::cerr << "usage: bench_throughput [--sizes 1e4,1e5,1e6] [--particle-steps 3e7] [--repeats 3] [--shape linear] [--csv FILE]\n";
+      std::cerr << "usage: bench_throughput [--sizes 1e4,1e5,1e6] [--particle-steps 3e7] [--repeats 3] [--shape linear] "
+                   "[--transport heat|both] [--csv FILE]\n";
       return a == "--help" ? 0 : 1;
     }
   }
 
   const ShapeRunner runner = runner_named(shape);
+  if (!transport.empty()) {
+    std::ofstream csv;
+    if (!csv_path.empty()) csv.open(csv_path);
+    transport_table(runner, sizes, particle_steps, repeats, shape, transport, csv);
+    return 0;
+  }
   const std::vector<StageGroup> nodes = scheme_named("usl").wiring.nodes;
   std::printf("3D elastic block on a fixed base under gravity, USL, %s shape functions; medians of %d runs\n",
               shape.c_str(), repeats);
@@ -231,9 +325,9 @@ int main(int argc, char** argv) {
     const std::size_t rss_before = resident_kib("VmRSS:");
     reset_peak_resident();
     for (int r = 0; r < repeats; ++r) {
-      const Timing serial = runner.time_steps(c, 1, true, steps);
-      const Timing one = runner.time_steps(c, 1, false, steps);
-      const Timing two = runner.time_steps(c, 2, false, steps);
+      const Timing serial = runner.time_steps(c, 1, true, steps, TransportBranch::beside);
+      const Timing one = runner.time_steps(c, 1, false, steps, TransportBranch::beside);
+      const Timing two = runner.time_steps(c, 2, false, steps, TransportBranch::beside);
       n = one.particles;
       rs.push_back(serial.rate);
       r1.push_back(one.rate);

@@ -1,11 +1,15 @@
 // Builds the DiscreteSystem of a SystemSpec: the grid, particles filling each
 // body's box at its spacing (one batch per body, of one material), velocity
-// constraints on node sets, then the first sort. Volumes are per unit
+// constraints and prescribed temperatures and concentrations on node sets,
+// surface fluxes, then the first sort. Temperatures and concentrations are
+// stored only when the scene conducts heat or diffuses solvent. Volumes are per unit
 // thickness in 2D and per unit cross-section in 1D. Throws CaseError naming
 // the spec's source and the body or node set for what only the built system
 // can tell (a body in the outermost cells, a node set with no node).
 #pragma once
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <numbers>
 #include <type_traits>
@@ -63,7 +67,19 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
   system.flip_fraction = spec.flip_fraction;
   if (D == 2 && spec.plane_stress) system.stress_state = StressState::plane_stress;
   system.dt = spec.dt;
+  system.heat.carried = spec.conducts_heat();
+  system.solvent.carried = spec.diffuses_solvent();
+  for (const SurfaceFluxSpec& f : spec.surface_fluxes) {
+    const BodySpec& body = spec.bodies[f.body];
+    double area = 1.0;  // the spacing's cell over its thickness normal to the face
+    for (int d = 0; d < D; ++d)
+      if (d != f.axis) area *= body.spacing[d];
+    system.surface_fluxes.push_back({f.name, area, f.heat, f.solvent});
+  }
 
+  // The least particle mass and heat capacity, for the transport thresholds.
+  double lightest = std::numeric_limits<double>::infinity();
+  double least_heat_capacity = std::numeric_limits<double>::infinity();
   for (std::size_t bi = 0; bi < spec.bodies.size(); ++bi) {
     const BodySpec& body = spec.bodies[bi];
     ParticleBatch<D> batch;
@@ -81,16 +97,27 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
     const double rho = density(system.materials[body.material]);
     Vec<D> v0;
     for (int d = 0; d < D; ++d) v0[d] = body.velocity[d];
+    // The faces of this body's box with a surface flux.
+    for (std::size_t k = 0; k < spec.surface_fluxes.size(); ++k) {
+      const SurfaceFluxSpec& f = spec.surface_fluxes[k];
+      if (f.body == static_cast<int>(bi)) batch.surface_flux[2 * f.axis + (f.side > 0)] = static_cast<int>(k);
+    }
+    const bool has_fluxes = std::ranges::any_of(batch.surface_flux, [](int k) { return k >= 0; });
     for (std::size_t p = 0; p < n; ++p) {
       Vec<D> x;
+      std::uint8_t faces = 0;
       std::size_t rest = p;
       for (int d = 0; d < D; ++d) {
         const int i = static_cast<int>(rest % count[d]);
         rest /= count[d];
         const double margin = 0.5 * ((body.box_max[d] - body.box_min[d]) - count[d] * body.spacing[d]);
         x[d] = body.box_min[d] + margin + (i + 0.5) * body.spacing[d];
+        // The first and last layers of particles lie on the box's faces.
+        if (i == 0 && batch.surface_flux[2 * d] >= 0) faces |= std::uint8_t(1u << (2 * d));
+        if (i == count[d] - 1 && batch.surface_flux[2 * d + 1] >= 0) faces |= std::uint8_t(1u << (2 * d + 1));
       }
       batch.x.push_back(x);
+      if (has_fluxes) batch.flux_faces.push_back(faces);
     }
     batch.v.assign(n, v0);
     if (spec.keep_initial_positions) batch.x0 = batch.x;
@@ -98,6 +125,18 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
     batch.volume.assign(n, volume);
     batch.stress.assign(n, Voigt{});
     batch.strain.assign(n, Voigt{});
+    if (system.heat.carried) {
+      batch.temperature.assign(n, body.temperature);
+      // The change since the stress-free state, for the first stress
+      // update: T - T_ref (materials/expansion.hpp).
+      const auto& reference = transport(system.materials[body.material]).reference_temperature;
+      batch.temperature_step.assign(n, reference ? body.temperature - *reference : 0.0);
+      least_heat_capacity = std::min(least_heat_capacity, rho * volume * transport(system.materials[body.material]).heat_capacity);
+    }
+    if (system.solvent.carried) {
+      batch.concentration.assign(n, body.concentration);
+      batch.concentration_step.assign(n, body.concentration);  // since c = 0, stress free
+    }
     batch.particle_length = std::pow(volume, 1.0 / D);
     for (int d = 0; d < D; ++d) batch.half_width[d] = 0.5 * body.spacing[d] * system.grid.inv_h[d];
     // A model may reject its parameters for this body's particles (e.g. a
@@ -129,7 +168,19 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
       throw CaseError(spec.source + ": bodies \"" + body.name + "\" (material \"" +
                       spec.materials[body.material].name + "\"): " + e.what());
     }
+    lightest = std::min(lightest, rho * volume);
     system.batches.push_back(std::move(batch));
+  }
+  // A node holding less than a millionth of the least particle capacity
+  // only sees the far tail of a shape function: its transport update
+  // dt Q / (mC) is noise, and it keeps its value.
+  if (system.heat.carried) {
+    system.grid.heat.allocate(system.grid.node_count());
+    system.heat.capacity_threshold = 1e-6 * least_heat_capacity;
+  }
+  if (system.solvent.carried) {
+    system.grid.solvent.allocate(system.grid.node_count());
+    system.solvent.capacity_threshold = 1e-6 * lightest;
   }
   // Particle ids in the order the particles were made: their rows in the output.
   std::uint32_t next_id = 0;
@@ -161,6 +212,9 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
     for (int d = 0; d < D; ++d) {
       if (set.velocity[d]) system.constraints.push_back({set.name, nodes, d, *set.velocity[d]});
     }
+    if (set.temperature) system.heat.prescribed.push_back({set.name, nodes, *set.temperature});
+    if (set.concentration) system.solvent.prescribed.push_back({set.name, nodes, *set.concentration});
+    if (!set.constrains_velocity()) continue;
     auto pairs = ghost_mirror_pairs<D, Shape>(system, set, nodes);
     if (!pairs.empty()) {
       for (NodeConstraint& k : system.constraints)

@@ -48,6 +48,32 @@ struct MirrorPlane {
   std::array<std::optional<TimeFunction>, 3> velocity;     // prescribed per axis
 };
 
+// A temperature or concentration prescribed on a set of nodes.
+struct PrescribedValue {
+  std::string name;
+  std::vector<std::size_t> nodes;
+  TimeFunction value;  // K or weight fraction
+};
+
+// Heat or solvent transport (tasks/transport.hpp): whether the particles
+// carry the field, and its prescribed nodal values.
+struct TransportField {
+  bool carried = false;
+  // Nodes with less capacity than this (a millionth of the smallest
+  // particle's) only see the far tail of a shape function: their rate
+  // flow / capacity would be noise, so their value is left as mapped.
+  double capacity_threshold = 0.0;
+  std::vector<PrescribedValue> prescribed;
+};
+
+// A flux through a face of a body, carried by the particles on that face.
+struct SurfaceFlux {
+  std::string name;
+  double area = 0.0;  // face area per particle (m^2; per unit thickness in 2D, 1 in 1D)
+  std::optional<TimeFunction> heat;     // W/m^2 into the body
+  std::optional<TimeFunction> solvent;  // kg/(m^2 s) into the body
+};
+
 // "(x, y, z) m" with 6 significant digits, for messages about a particle.
 template <int D>
 std::string position_text(const Vec<D>& x) {
@@ -100,6 +126,8 @@ struct DiscreteSystem {
   std::vector<Material> materials;
   std::vector<NodeConstraint> constraints;
   std::vector<MirrorPlane> mirror_planes;
+  TransportField heat, solvent;
+  std::vector<SurfaceFlux> surface_fluxes;
   Vec<D> gravity = Vec<D>::Zero();
   double flip_fraction = 1.0;
 

@@ -12,6 +12,20 @@
 
 namespace flowmpm {
 
+// Heat or solvent on the nodes (tasks/transport.hpp), allocated only when
+// the scene carries it.
+struct TransportNodes {
+  std::vector<double> capacity;  // heat: sum N m C (J/K); solvent: sum N m (kg)
+  std::vector<double> value;     // T (K) or c (weight fraction)
+  std::vector<double> flow;      // heat flow (W) or solvent flow (kg/s) into the node
+  std::vector<double> change;    // the mapped value, then its change over the step
+  std::vector<double> reprojected;  // sum N m C (sum N T), sum N m (sum N c): the values mapped back
+
+  void allocate(std::size_t nodes) {
+    for (auto* field : {&capacity, &value, &flow, &change, &reprojected}) field->assign(nodes, 0.0);
+  }
+};
+
 template <int D>
 struct Grid {
   Vec<D> origin = Vec<D>::Zero();
@@ -33,6 +47,8 @@ struct Grid {
   // stiffness, for shape functions whose gradient jumps (held_node in
   // tasks/grid_update.hpp); empty for the others.
   std::vector<double> stiffness;
+  // Transport fields, empty unless the scene conducts heat / diffuses solvent.
+  TransportNodes heat, solvent;
 
   // Only nodes inside [active_lo, active_hi] (inclusive) can carry mass;
   // grid stages clear and visit that box alone.

@@ -3,6 +3,7 @@
 // memory are neighbours in space. Fields no part of the scene reads are not
 // stored (empty arrays).
 #pragma once
+#include <array>
 #include <cstdint>
 #include <variant>
 #include <vector>
@@ -34,6 +35,16 @@ struct ParticleBatch {
   std::vector<Voigt> stress, strain;       // Pa, -
   std::vector<std::uint32_t> id;           // made in this order at set-up: the output row
   MaterialStates states;                   // the model's internal variables
+  // Only when the scene conducts heat: T (K) and its change over the last
+  // transport step; only when it diffuses solvent: c (weight fraction) and
+  // its change (tasks/transport.hpp).
+  std::vector<double> temperature, temperature_step;
+  std::vector<double> concentration, concentration_step;
+  // Only when the body has surface fluxes: bit f set when the particle lies
+  // on face f = 2 axis + (0 at the box's min, 1 at its max), whose flux is
+  // DiscreteSystem::surface_fluxes[surface_flux[f]].
+  std::vector<std::uint8_t> flux_faces;
+  std::array<int, 6> surface_flux{-1, -1, -1, -1, -1, -1};
 
   // Particles of block b are [block_begin[b], block_begin[b + 1]).
   std::vector<std::uint32_t> block_begin;
@@ -63,6 +74,11 @@ struct ParticleBatch {
     f("stress", self.stress);
     f("strain", self.strain);
     f("id", self.id);
+    f("temperature", self.temperature);
+    f("temperature_step", self.temperature_step);
+    f("concentration", self.concentration);
+    f("concentration_step", self.concentration_step);
+    f("flux_faces", self.flux_faces);
     std::visit([&](auto& states) { f("state", states); }, self.states);
   }
 };

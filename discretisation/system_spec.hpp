@@ -33,6 +33,10 @@ struct BodySpec {
   // from the axis through (x_c, y_c) parallel to z (wood: radial, with the
   // material y tangential and z along the pith).
   std::optional<std::array<double, 2>> material_axes_center;
+  // Initial temperature (K) and solvent concentration (weight fraction) of
+  // the particles, used when the scene conducts heat (diffuses solvent).
+  double temperature = 0.0;
+  double concentration = 0.0;
 };
 
 struct NodeSetSpec {
@@ -44,6 +48,27 @@ struct NodeSetSpec {
   Vec3 box_min{}, box_max{};
   // Prescribed velocity per axis (m/s) as a function of time; absent = free.
   std::array<std::optional<TimeFunction>, 3> velocity;
+  // Prescribed temperature (K) and concentration (weight fraction) as
+  // functions of time; absent = insulated (no flux through the grid edge).
+  std::optional<TimeFunction> temperature, concentration;
+
+  bool constrains_velocity() const {
+    for (const auto& v : velocity)
+      if (v) return true;
+    return false;
+  }
+};
+
+// A flux into a body through one face of its box, carried by the layer of
+// particles on that face (as NairnMPM's particle-based flux conditions):
+// each adds N_Ip q A_p to the nodal flow, A_p the face area it represents.
+struct SurfaceFluxSpec {
+  std::string name;
+  int body = 0;  // index into SystemSpec::bodies
+  int axis = 0;  // the face's normal axis
+  int side = -1;  // -1: the face at the box's min, +1: at its max
+  std::optional<TimeFunction> heat;     // W/m^2 into the body
+  std::optional<TimeFunction> solvent;  // kg/(m^2 s) of solvent into the body
 };
 
 struct SystemSpec {
@@ -59,6 +84,20 @@ struct SystemSpec {
   std::vector<NamedMaterial> materials;
   std::vector<BodySpec> bodies;
   std::vector<NodeSetSpec> node_sets;
+  std::vector<SurfaceFluxSpec> surface_fluxes;
+
+  // The particles carry a temperature when some material conducts heat, a
+  // concentration when some material diffuses solvent; nothing otherwise.
+  bool conducts_heat() const {
+    for (const auto& m : materials)
+      if (transport(m.model).conducts()) return true;
+    return false;
+  }
+  bool diffuses_solvent() const {
+    for (const auto& m : materials)
+      if (transport(m.model).diffuses()) return true;
+    return false;
+  }
 };
 
 }  // namespace flowmpm

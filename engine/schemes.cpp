@@ -1,5 +1,6 @@
 #include "engine/schemes.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "core/registry.hpp"
@@ -31,6 +32,33 @@ const std::vector<Scheme>& schemes() {
              {{grid_velocity}, {grid_integrate}, {g2p_motion}, {remap}, {grid_velocity}, {g2p_stress}})},
   };
   return table;
+}
+
+Wiring with_transport(const Wiring& mechanical, TransportBranch branch) {
+  using enum Stage;
+  Wiring w = mechanical;
+  const int first = static_cast<int>(w.nodes.size());
+  for (Stage s : {transport_p2g, transport_flux, transport_update, transport_g2p}) w.nodes.push_back({s});
+  for (int i = first; i + 1 < static_cast<int>(w.nodes.size()); ++i) w.edges.emplace_back(i, i + 1);
+  const int last = static_cast<int>(w.nodes.size()) - 1;
+  auto writes_particles = [](const StageGroup& g) {
+    return std::ranges::any_of(g, [](Stage s) { return s == g2p_motion || s == g2p_stress; });
+  };
+  if (branch == TransportBranch::before) {
+    // The transport chain first, then every node that starts the mechanics.
+    std::vector<bool> has_predecessor(mechanical.nodes.size(), false);
+    for (auto [from, to] : mechanical.edges) has_predecessor[to] = true;
+    for (int i = 0; i < first; ++i)
+      if (!has_predecessor[i]) w.edges.emplace_back(last, i);
+    return w;
+  }
+  for (int i : mechanical.topological_order()) {
+    if (writes_particles(mechanical.nodes[i])) {
+      w.edges.emplace_back(last, i);
+      return w;
+    }
+  }
+  throw std::logic_error("the wiring has no g2p stage for the transport branch to join before");
 }
 
 std::vector<std::string> scheme_names() {

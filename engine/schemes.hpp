@@ -4,11 +4,13 @@
 //   USL:  p2g_momentum & p2g_force -> grid_velocity -> grid_integrate -> g2p_motion & g2p_stress
 //   MUSL: p2g_momentum & p2g_force -> grid_velocity -> grid_integrate -> g2p_motion -> remap
 //         -> grid_velocity -> g2p_stress
+// A scene with heat or solvent transport adds a branch (with_transport).
 #pragma once
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "discretisation/system_spec.hpp"
 #include "engine/step_graph.hpp"
 
 namespace flowmpm {
@@ -23,5 +25,28 @@ const std::vector<Scheme>& schemes();
 std::vector<std::string> scheme_names();
 // The scheme called `name`; throws std::invalid_argument listing the known ones.
 const Scheme& scheme_named(std::string_view name);
+
+// Where the transport stages (tasks/transport.hpp) run in a step.
+enum class TransportBranch {
+  beside,  // a branch of the graph concurrent with the momentum stages
+  before,  // one after the other: the transport chain, then the mechanics (for the bench)
+};
+
+// The wiring of a step that also conducts heat or diffuses solvent: the
+// mechanical wiring plus the chain
+//   transport_p2g -> transport_flux -> transport_update -> transport_g2p,
+// which starts with the step and joins before the mechanical wiring's first
+// node that writes particles (a g2p stage). The transport passes read the
+// particles' positions, volumes and material axes, which only that node
+// changes, and write transport fields that no momentum stage reads; the
+// stress update then sees the new temperature and concentration.
+Wiring with_transport(const Wiring& mechanical, TransportBranch branch = TransportBranch::beside);
+
+// The wiring a system runs: the scheme's, with the transport branch only
+// when the scene conducts heat or diffuses solvent.
+inline Wiring step_wiring(const Wiring& mechanical, const SystemSpec& spec,
+                          TransportBranch branch = TransportBranch::beside) {
+  return spec.conducts_heat() || spec.diffuses_solvent() ? with_transport(mechanical, branch) : mechanical;
+}
 
 }  // namespace flowmpm

@@ -13,6 +13,7 @@
 #include "discretisation/build_system.hpp"
 #include "engine/diagnostics.hpp"
 #include "engine/energy_balance.hpp"
+#include "engine/schemes.hpp"
 #include "engine/take_snapshot.hpp"
 #include "engine/step_graph.hpp"
 #include "tasks/stage_table.hpp"
@@ -22,14 +23,18 @@ namespace flowmpm {
 template <int D, class Shape>
 class Simulation {
  public:
-  // `observer`, if given, is called as each stage starts (from any thread;
-  // for the stages of one node, in their order, as the node starts).
-  // `fixed_dt`: the time step when it stays fixed, 0 when the caller sets
-  // system().dt before every step.
+  // `wiring`: the scheme's; the transport branch is added when the scene
+  // needs it (step_wiring), beside the momentum stages unless `branch`
+  // says otherwise. `observer`, if given, is called as each stage starts
+  // (from any thread; for the stages of one node, in their order, as the
+  // node starts). `fixed_dt`: the time step when it stays fixed, 0 when the
+  // caller sets system().dt before every step.
   Simulation(const SystemSpec& spec, const Wiring& wiring, double fixed_dt,
-             std::function<void(Stage)> observer = {})
-      : fixed_dt_(fixed_dt), observer_(std::move(observer)), graph_(wiring, [this](int node) { run_node(node); }) {
-    for (const StageGroup& group : wiring.nodes) passes_.push_back(stage_pass<D, Shape>(group));
+             std::function<void(Stage)> observer = {}, TransportBranch branch = TransportBranch::beside)
+      : fixed_dt_(fixed_dt),
+        observer_(std::move(observer)),
+        graph_(step_wiring(wiring, spec, branch), [this](int node) { run_node(node); }) {
+    for (const StageGroup& group : graph_.wiring().nodes) passes_.push_back(stage_pass<D, Shape>(group));
     build_system(spec, system_);
     // Nodes too light for their stiffness are held only where the stress
     // update sees the updated grid velocity (tasks/grid_update.hpp held_node).

@@ -37,6 +37,9 @@ inline constexpr OutputField builtin_output_fields[] = {
     {"volume", 1, "m^3", false},
     {"mass", 1, "kg", false},
     {"material", 1, nullptr, true},  // index into the case's materials
+    // Only in scenes that conduct heat / diffuse solvent (tasks/transport.hpp).
+    {"temperature", 1, "K", false},
+    {"concentration", 1, "-", false},  // weight fraction
     {"initial_position", 3, "m", false},
 };
 

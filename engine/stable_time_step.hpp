@@ -4,11 +4,13 @@
 // for the scheme and the particles per cell (docs/STABILITY.md: a von
 // Neumann analysis of the update, checked on the vibrating bar and the 2D
 // column), taken with a margin of 10 %. With dt = "auto" the particles'
-// speed is added to c_max at every step.
+// speed is added to c_max at every step. When the scene conducts heat or
+// diffuses solvent, the explicit diffusion limit joins it (TimeStepLimit).
 #pragma once
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "discretisation/shape_functions.hpp"
@@ -49,6 +51,56 @@ inline StableStep stable_time_step(const SystemSpec& spec, const Scheme& scheme)
   // (|dN|^2 / N grows with the particles per cell); conservative for the others.
   if (s.particles_per_cell > 4.0) s.factor *= std::sqrt(4.0 / s.particles_per_cell);
   return s;
+}
+
+struct DiffusionStep {
+  double dt = 0.0;          // s
+  std::string material;     // the material with the largest diffusivity
+  std::string field;        // "heat" or "solvent"
+  double diffusivity = 0.0;  // its k / (rho C) or D (m^2/s)
+};
+
+// The explicit transport update (tasks/transport.hpp: forward Euler with
+// the lumped capacities M and the conduction matrix K) is stable for
+// dt <= 2 / lambda_max(M^-1 K). lambda_max is at most the largest principal
+// diffusivity kappa times that of isotropic unit conduction, whose rows are
+// bounded (Gershgorin) by 4 sum_d 1 / h_d^2 when the particles of a body
+// sit on their lattice: per axis, the gradients of a particle's shape
+// functions sum in absolute value to at most 2 / h_d (linear, uGIMP,
+// B-splines). Hence
+//   dt <= 1 / (2 kappa sum_d 1 / h_d^2)   (= h^2 / (2 D kappa) on cubic cells),
+// kappa = k / (rho C) for heat and D for solvent, the largest along the
+// material axes in the analysis' plane. A bound, not an estimate (the
+// particle scheme is stable up to 3 times it: README "Stability"), so it
+// takes no margin. None when nothing is transported.
+inline std::optional<DiffusionStep> diffusion_time_step(const SystemSpec& spec) {
+  double inverse_h2 = 0.0;
+  for (int d = 0; d < spec.dimension; ++d) inverse_h2 += 1.0 / (spec.grid.cell_size[d] * spec.grid.cell_size[d]);
+  std::optional<DiffusionStep> result;
+  auto consider = [&](double kappa, const std::string& material, const char* field) {
+    if (!(kappa > 0.0)) return;
+    const double dt = 1.0 / (2.0 * kappa * inverse_h2);
+    if (!result || dt < result->dt) result = DiffusionStep{dt, material, field, kappa};
+  };
+  for (const auto& m : spec.materials) {
+    const TransportProperties& p = transport(m.model);
+    if (p.conducts()) consider(p.heat_diffusivity(density(m.model), spec.dimension), m.name, "heat");
+    if (p.diffuses()) consider(p.solvent_diffusivity(spec.dimension), m.name, "solvent");
+  }
+  return result;
+}
+
+// Both limits of a scene: the accepted dt is the smaller.
+struct TimeStepLimit {
+  StableStep wave;
+  std::optional<DiffusionStep> diffusion;  // with transport only
+
+  double dt() const { return diffusion ? std::min(wave.dt(), diffusion->dt) : wave.dt(); }
+  bool diffusion_governs() const { return diffusion && diffusion->dt < wave.dt(); }
+};
+
+inline TimeStepLimit time_step_limit(const SystemSpec& spec, const Scheme& scheme) {
+  return {stable_time_step(spec, scheme), diffusion_time_step(spec)};
 }
 
 }  // namespace flowmpm

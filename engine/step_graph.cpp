@@ -1,5 +1,6 @@
 #include "engine/step_graph.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <stdexcept>
 
@@ -36,13 +37,29 @@ bool Wiring::stress_from_updated_grid() const {
 }
 
 std::string Wiring::describe() const {
-  // The stages that start the step run side by side ("+"), the rest follow ("->").
-  std::vector<bool> has_predecessor(nodes.size(), false);
-  for (auto [from, to] : edges) has_predecessor[to] = true;
+  // Chains of nodes joined by their edges, in topological order; a chain
+  // that reaches a node already written ends with it (a join), and chains
+  // that run beside one another are separated by " || ".
+  const int n = static_cast<int>(nodes.size());
+  std::vector<std::vector<int>> successors(n);
+  for (auto [from, to] : edges) successors[from].push_back(to);
+  std::vector<bool> written(n, false);
   std::string text;
-  for (int i : topological_order()) {
-    if (!text.empty()) text += has_predecessor[i] ? " -> " : " + ";
-    text += group_name(nodes[i]);
+  for (int start : topological_order()) {
+    if (written[start]) continue;
+    if (!text.empty()) text += " || ";
+    text += group_name(nodes[start]);
+    written[start] = true;
+    for (int at = start; !successors[at].empty();) {
+      const auto next = std::ranges::find_if(successors[at], [&](int s) { return !written[s]; });
+      if (next == successors[at].end()) {
+        text += " -> " + group_name(nodes[successors[at].front()]);
+        break;
+      }
+      text += " -> " + group_name(nodes[*next]);
+      written[*next] = true;
+      at = *next;
+    }
   }
   return text;
 }

@@ -4,7 +4,8 @@
 // once per step. Parallelism lives inside each stage (coarse graph, fine
 // loops). A node may run two particle stages in one pass over the particles
 // ("&"), where both read the same particle state: each particle's stencil is
-// then evaluated once instead of twice.
+// then evaluated once instead of twice. Nodes without a path between them
+// run concurrently (the transport branch beside the momentum stages).
 #pragma once
 #include <functional>
 #include <memory>
@@ -27,8 +28,9 @@ struct Wiring {
   // (USL: grid_integrate is the last grid stage before g2p_stress), not one
   // mapped from the particles (USF, MUSL: grid_velocity is).
   bool stress_from_updated_grid() const;
-  // Human-readable: "p2g_momentum & p2g_force -> grid_velocity -> ...",
-  // with "+" between nodes that start the step side by side.
+  // Human-readable: "p2g_momentum & p2g_force -> grid_velocity -> ...";
+  // a branch that runs beside follows " || " and ends with the node it
+  // joins before: "... || transport_p2g -> ... -> transport_g2p -> g2p_motion & g2p_stress".
   std::string describe() const;
 };
 

@@ -101,6 +101,26 @@ Vec3 per_axis(TableReader& t, std::string_view key, int dim) {
   return vector_of(t, key, dim);
 }
 
+// The output fields a case may ask for: the built-in ones and the state
+// variables of its models, the transported fields only when carried.
+std::vector<std::string> offered_fields(const SystemSpec& c) {
+  std::vector<Material> materials;
+  for (const NamedMaterial& m : c.materials) materials.push_back(m.model);
+  std::vector<std::string> names;
+  for (const OutputField& f : output_fields_of(materials)) names.emplace_back(f.name);
+  if (!c.conducts_heat()) std::erase(names, "temperature");
+  if (!c.diffuses_solvent()) std::erase(names, "concentration");
+  return names;
+}
+
+// The fields written when a case does not choose, with the transported ones.
+std::vector<std::string> default_fields(const SystemSpec& c) {
+  std::vector<std::string> names = default_output_fields();
+  if (c.conducts_heat()) names.emplace_back("temperature");
+  if (c.diffuses_solvent()) names.emplace_back("concentration");
+  return names;
+}
+
 void read_analysis(TableReader t, Case& c) {
   SystemSpec& s = c.system;
   s.dimension = static_cast<int>(t.integer("dimension"));
@@ -229,8 +249,47 @@ void read_body(TableReader t, SystemSpec& c, std::size_t index) {
     const std::vector<double> center = t.numbers("material_axes_center", 2);
     b.material_axes_center = std::array<double, 2>{center[0], center[1]};
   }
+  // The initial temperature and concentration, when the scene carries them.
+  const TransportProperties& properties = transport(c.materials[b.material].model);
+  if (c.conducts_heat()) {
+    if (t.has("temperature")) {
+      b.temperature = t.positive("temperature", "the initial temperature in K (> 0)");
+    } else if (properties.reference_temperature) {
+      b.temperature = *properties.reference_temperature;
+    } else {
+      t.fail("temperature", "the initial temperature in K (the scene conducts heat, and material \"" +
+                                material + "\" has no reference_temperature to start from)");
+    }
+  } else if (t.has("temperature")) {
+    t.fail("temperature", "no initial temperature: no material of the scene conducts heat (conductivity)");
+  }
+  if (t.has("concentration")) {
+    t.require(c.diffuses_solvent(), "concentration",
+              "no initial concentration: no material of the scene diffuses solvent (diffusivity)");
+    b.concentration = t.number("concentration");
+    t.require(b.concentration >= 0.0 && b.concentration <= 1.0, "concentration",
+              "an initial solvent concentration (weight fraction) in [0, 1]");
+  }
   t.reject_unknown_keys();
   c.bodies.push_back(b);
+}
+
+// A prescribed temperature (K, > 0) or concentration (in [0, 1]) as a
+// function of time, allowed only when the scene carries that field.
+std::optional<TimeFunction> transport_condition(TableReader& t, const char* key, bool carried) {
+  if (!t.has(key)) return std::nullopt;
+  const bool heat = std::string_view(key) == "temperature";
+  if (!carried) {
+    t.fail(key, heat ? "no prescribed temperature: no material of the scene conducts heat (conductivity)"
+                     : "no prescribed concentration: no material of the scene diffuses solvent (diffusivity)");
+  }
+  const char* what = heat ? "a temperature in K" : "a solvent concentration (weight fraction)";
+  TimeFunction f = t.time_function(key, what);
+  for (const auto& [time, value] : f.points) {
+    t.require(heat ? value > 0.0 : value >= 0.0 && value <= 1.0, key,
+              heat ? "temperatures in K (> 0)" : "concentrations (weight fractions) in [0, 1]");
+  }
+  return f;
 }
 
 void read_node_set(TableReader t, SystemSpec& c, std::size_t index) {
@@ -256,13 +315,80 @@ void read_node_set(TableReader t, SystemSpec& c, std::size_t index) {
     if (!t.has("min") || !t.has("max")) t.fail_table("a box needs both min and max");
     for (int d = 0; d < c.dimension; ++d) t.require(s.box_min[d] <= s.box_max[d], "max", "max >= min");
   }
-  TableReader v = t.table("velocity");
-  for (int d = 0; d < c.dimension; ++d) {
-    if (v.has(axis_names[d])) s.velocity[d] = v.time_function(axis_names[d], "a velocity in m/s");
+  s.temperature = transport_condition(t, "temperature", c.conducts_heat());
+  s.concentration = transport_condition(t, "concentration", c.diffuses_solvent());
+  if (!s.temperature && !s.concentration && !t.has("velocity")) {
+    t.fail("velocity", "what the node set prescribes: velocity = { x = ... }, temperature or concentration");
   }
-  v.reject_unknown_keys();
+  if (t.has("velocity")) {
+    TableReader v = t.table("velocity");
+    for (int d = 0; d < c.dimension; ++d) {
+      if (v.has(axis_names[d])) s.velocity[d] = v.time_function(axis_names[d], "a velocity in m/s");
+    }
+    v.reject_unknown_keys();
+  }
   t.reject_unknown_keys();
   c.node_sets.push_back(s);
+}
+
+void read_surface_flux(TableReader t, SystemSpec& c, std::size_t index) {
+  SurfaceFluxSpec f;
+  f.name = t.string_or("name", "surface_flux" + std::to_string(index));
+  const std::string body = t.string("body");
+  f.body = -1;
+  std::string known;
+  for (std::size_t b = 0; b < c.bodies.size(); ++b) {
+    if (c.bodies[b].name == body) f.body = static_cast<int>(b);
+    known += (known.empty() ? "\"" : ", \"") + c.bodies[b].name + "\"";
+  }
+  if (f.body < 0) t.fail("body", "the name of a body: " + known);
+  std::vector<std::string> faces;
+  for (int d = 0; d < c.dimension; ++d)
+    for (const char* side : {"-", "+"}) faces.push_back(axis_names[d] + std::string(side));
+  const std::string face = t.choice("face", faces);
+  f.axis = face[0] - 'x';
+  f.side = face[1] == '+' ? 1 : -1;
+  if (t.has("heat_flux")) {
+    t.require(c.conducts_heat(), "heat_flux", "no heat flux: no material of the scene conducts heat (conductivity)");
+    f.heat = t.time_function("heat_flux", "a heat flux into the body in W/m^2");
+  }
+  if (t.has("solvent_flux")) {
+    t.require(c.diffuses_solvent(), "solvent_flux",
+              "no solvent flux: no material of the scene diffuses solvent (diffusivity)");
+    f.solvent = t.time_function("solvent_flux", "a solvent flux into the body in kg/(m^2 s)");
+  }
+  if (!f.heat && !f.solvent) t.fail_table("give heat_flux (W/m^2) or solvent_flux (kg/(m^2 s)), or both");
+  t.reject_unknown_keys();
+  c.surface_fluxes.push_back(f);
+}
+
+// What a scene that conducts heat or diffuses solvent asks of every
+// material (each has read its own keys already): a heat capacity, and no
+// uniform temperature change or concentration (the transported field
+// drives the expansion).
+void check_transport(std::vector<TableReader>& materials, const SystemSpec& c) {
+  for (const char* field : {"heat", "solvent"}) {
+    const bool heat = std::string_view(field) == "heat";
+    if (heat ? !c.conducts_heat() : !c.diffuses_solvent()) continue;
+    std::string carrier;
+    for (const auto& m : c.materials) {
+      const TransportProperties& p = transport(m.model);
+      if (carrier.empty() && (heat ? p.conducts() : p.diffuses())) carrier = m.name;
+    }
+    const std::string why = heat ? "the scene conducts heat (material \"" + carrier + "\" has a conductivity)"
+                                 : "the scene diffuses solvent (material \"" + carrier + "\" has a diffusivity)";
+    for (std::size_t i = 0; i < materials.size(); ++i) {
+      TableReader& m = materials[i];
+      if (heat && transport(c.materials[i].model).heat_capacity == 0.0) {
+        m.fail("heat_capacity", "the specific heat capacity in J/(kg K): " + why);
+      }
+      const char* uniform = heat ? "temperature_change" : "concentration";
+      if (m.has(uniform)) {
+        m.fail(uniform, std::string("no uniform ") + uniform + ": " + why + ", so each particle's own " +
+                            (heat ? "temperature" : "concentration") + " drives the expansion");
+      }
+    }
+  }
 }
 
 void read_output(TableReader t, Case& c) {
@@ -270,11 +396,7 @@ void read_output(TableReader t, Case& c) {
   c.output.every = t.integer_or("every", 0);
   t.require(c.output.every >= 0, "every", "a number of steps >= 0 (0: about 20 over the run)");
   if (t.has("fields")) {
-    // The built-in fields and the state variables of the case's models.
-    std::vector<Material> materials;
-    for (const NamedMaterial& m : c.system.materials) materials.push_back(m.model);
-    std::vector<std::string> known;
-    for (const OutputField& f : output_fields_of(materials)) known.emplace_back(f.name);
+    const std::vector<std::string> known = offered_fields(c.system);
     c.output.fields = t.strings("fields");
     for (const std::string& name : c.output.fields) {
       if (std::ranges::find(known, name) == known.end()) {
@@ -322,18 +444,23 @@ Case read_case(const std::filesystem::path& file, const std::vector<std::string>
 
   // Each key of [materials] names a material with its own table.
   TableReader materials = t.table("materials");
+  std::vector<TableReader> material_tables;
   for (auto&& [key, value] : *root.get("materials")->as_table()) {
     TableReader m = materials.table(key.str());
     c.system.materials.push_back({std::string(key.str()), read_material(m)});
     m.reject_unknown_keys();
+    material_tables.push_back(std::move(m));
   }
   if (c.system.materials.empty()) materials.fail_table("define at least one material, e.g. [materials.steel]");
+  check_transport(material_tables, c.system);
 
   const auto bodies = t.tables("bodies");
   if (bodies.empty()) t.fail("bodies", "at least one [[bodies]] table");
   for (std::size_t i = 0; i < bodies.size(); ++i) read_body(bodies[i], c.system, i);
   const auto node_sets = t.tables("node_sets");
   for (std::size_t i = 0; i < node_sets.size(); ++i) read_node_set(node_sets[i], c.system, i);
+  const auto fluxes = t.tables("surface_fluxes");
+  for (std::size_t i = 0; i < fluxes.size(); ++i) read_surface_flux(fluxes[i], c.system, i);
   if (t.has("reference")) {
     TableReader r = t.table("reference");
     c.reference = Reference::read(r, {c.system, c.end_time});
@@ -341,7 +468,7 @@ Case read_case(const std::filesystem::path& file, const std::vector<std::string>
     c.system.keep_initial_positions = true;
   }
   c.output.directory = "results/" + c.name;
-  c.output.fields = default_output_fields();
+  c.output.fields = default_fields(c.system);
   if (t.has("output")) read_output(t.table("output"), c);
   for (const char* needs_x0 : {"displacement", "initial_position"}) {
     if (std::ranges::find(c.output.fields, needs_x0) != c.output.fields.end()) c.system.keep_initial_positions = true;
@@ -349,9 +476,11 @@ Case read_case(const std::filesystem::path& file, const std::vector<std::string>
   t.reject_unknown_keys();
 
   // The explicit step is stable only below a fraction of the time a P wave
-  // takes to cross the smallest cell (engine/stable_time_step.hpp).
+  // takes to cross the smallest cell, and, with transport, below the
+  // explicit diffusion limit (engine/stable_time_step.hpp).
   const Scheme& scheme = scheme_named(c.scheme);
-  const StableStep stable = stable_time_step(c.system, scheme);
+  const TimeStepLimit limits = time_step_limit(c.system, scheme);
+  const StableStep& stable = limits.wave;
   const std::string limit = readable_text(stable.factor) + " h/c = " + readable_text(stable.dt()) + " s for " +
                             scheme.label + " with " + c.system.shape_function + " shape functions at " +
                             readable_text(stable.particles_per_cell) + " particles per cell (h/c = " +
@@ -362,9 +491,25 @@ Case read_case(const std::filesystem::path& file, const std::vector<std::string>
     if (!analysis.has("cfl")) c.cfl = std::min(0.5, 0.8 * stable.factor);
     analysis.require(c.cfl <= stable.factor, "cfl", "a CFL number no larger than the stable limit " + limit);
     c.dt = c.cfl * stable.crossing;  // the first step's, particles at rest
+    // The same fraction of the diffusion limit as of the wave limit.
+    if (limits.diffusion) c.dt = std::min(c.dt, c.cfl / stable.factor * limits.diffusion->dt);
   }
   c.system.dt = c.dt;
-  if (c.dt > stable.dt()) analysis.fail("dt", "a time step no larger than the stable limit " + limit);
+  if (!limits.diffusion) {
+    if (c.dt > stable.dt()) analysis.fail("dt", "a time step no larger than the stable limit " + limit);
+    return c;
+  }
+  const DiffusionStep& diffusion = *limits.diffusion;
+  const std::string diffusion_limit = "the " + diffusion.field + " diffusion limit 1 / (2 kappa sum_d 1/h_d^2) = " +
+                                      readable_text(diffusion.dt) + " s (" + diffusion.field + " diffusivity " +
+                                      readable_text(diffusion.diffusivity) + " m^2/s of material \"" +
+                                      diffusion.material + "\")";
+  const std::string wave_limit = "the wave limit " + limit;
+  if (c.dt > limits.dt()) {
+    analysis.fail("dt", "a time step no larger than the stable limit " + readable_text(limits.dt()) + " s: " +
+                            (limits.diffusion_governs() ? diffusion_limit + " governs; " + wave_limit
+                                                        : wave_limit + " governs; " + diffusion_limit));
+  }
   return c;
 }
 

@@ -1,14 +1,19 @@
 // Isotropic linear elasticity, small strain ([Sulsky 1994]):
-//   d sigma = lambda tr(d eps) I + 2 mu d eps,
-//   lambda = E nu / ((1 + nu)(1 - 2 nu)), mu = E / (2 (1 + nu)).
-// Rate form, so that it composes with return mapping later.
+//   d sigma = lambda tr(d eps_m) I + 2 mu d eps_m,
+//   lambda = E nu / ((1 + nu)(1 - 2 nu)), mu = E / (2 (1 + nu)),
+// with d eps_m = d eps - (alpha d(T - T_ref) + beta dc) I the mechanical
+// part of the strain increment: the isotropic expansion takes no stress
+// (materials/expansion.hpp). Rate form, so that it composes with return
+// mapping later.
 #pragma once
 #include <cmath>
 
 #include "core/voigt.hpp"
-#include "materials/material_input.hpp"
+#include "materials/expansion.hpp"
 #include "materials/lame.hpp"
+#include "materials/material_input.hpp"
 #include "materials/stress_state.hpp"
+#include "materials/transport_properties.hpp"
 
 namespace flowmpm {
 
@@ -21,6 +26,8 @@ struct LinearElastic {
     double density = 0.0;          // kg/m^3
     double youngs_modulus = 0.0;   // Pa
     double poisson_ratio = 0.0;    // -
+    TransportProperties transport;  // heat capacity, conductivity, diffusivity (scalars)
+    Expansion expansion;            // isotropic alpha, beta and what drives them
   };
   struct State {};  // no internal variables
   State initial_state(const ParticleInit&) const { return {}; }
@@ -37,16 +44,48 @@ struct LinearElastic {
   static LinearElastic read(ParameterTable& table);
 
   double density() const { return parameters.density; }
+  const TransportProperties& transport() const { return parameters.transport; }
 
   // The fastest wave the model carries (P wave, constrained modulus), m/s.
   double wave_speed() const { return std::sqrt((lambda + 2.0 * mu) / parameters.density); }
 
   // Stress update for the strain increment `deps`. For reduced stress
   // states the out-of-plane components of `deps` are set here (uniaxial
-  // stress: d eps_yy = d eps_zz = -nu d eps_xx; plane stress:
-  // d eps_zz = -lambda / (lambda + 2 mu) (d eps_xx + d eps_yy)).
+  // stress: d eps_yy = d eps_zz = th - nu (d eps_xx - th); plane stress:
+  // d eps_zz = th - lambda / (lambda + 2 mu) (d eps_xx + d eps_yy - 2 th)),
+  // th the expansion increment.
   template <StressState Kind>
-  void update(State&, Voigt& sigma, Voigt& deps, const MaterialInput&) const {
+  void update(State&, Voigt& sigma, Voigt& deps, const MaterialInput& in) const {
+    if (!parameters.expansion.any()) return elastic_update<Kind>(sigma, deps);
+    // The update sees the mechanical increment d eps - th I; the total is restored after.
+    const double th = parameters.expansion.isotropic_step(in);
+    for (int i = 0; i < 3; ++i) deps[i] -= th;
+    elastic_update<Kind>(sigma, deps);
+    for (int i = 0; i < 3; ++i) deps[i] += th;
+  }
+
+  // Work done on the body by the isotropic expansion over one increment per
+  // unit volume (J/m^3), -tr(sigma) th, for the energy balance.
+  double expansion_work(const State&, const Voigt& sigma, const MaterialInput& in) const {
+    return parameters.expansion.isotropic_work(sigma, in);
+  }
+  bool expands() const { return parameters.expansion.any(); }
+
+  // Strain energy per unit volume: sigma : eps / 2 (all of the strain is
+  // elastic); with expansion, sigma : C^-1 : sigma / 2 = p^2 / (2 K) +
+  // s : s / (4 mu), the elastic part only.
+  double stored_energy(const State&, const Voigt& sigma, const Voigt& eps) const {
+    if (!parameters.expansion.any()) return 0.5 * double_contraction(sigma, eps);
+    const double p = (sigma[0] + sigma[1] + sigma[2]) / 3.0, K = lambda + 2.0 * mu / 3.0;
+    Voigt s = sigma;
+    for (int i = 0; i < 3; ++i) s[i] -= p;
+    return p * p / (2.0 * K) + double_contraction(s, s) / (4.0 * mu);
+  }
+
+ private:
+  // The elastic update for a mechanical strain increment.
+  template <StressState Kind>
+  [[gnu::always_inline]] void elastic_update(Voigt& sigma, Voigt& deps) const {
     if constexpr (Kind == StressState::uniaxial_stress) {
       deps[1] = deps[2] = -parameters.poisson_ratio * deps[0];
       sigma[0] += parameters.youngs_modulus * deps[0];
@@ -60,11 +99,6 @@ struct LinearElastic {
     const double trace = deps[0] + deps[1] + deps[2];
     for (int i = 0; i < 3; ++i) sigma[i] += lambda * trace + 2.0 * mu * deps[i];
     for (int i = 3; i < 6; ++i) sigma[i] += 2.0 * mu * deps[i];
-  }
-
-  // Strain energy per unit volume, sigma : eps / 2 (all of the strain is elastic).
-  double stored_energy(const State&, const Voigt& sigma, const Voigt& eps) const {
-    return 0.5 * double_contraction(sigma, eps);
   }
 };
 

@@ -10,17 +10,27 @@
 //                                                    // recoverable energy per unit volume (J/m^3)
 //   double density() const;                          // kg/m^3
 //   double wave_speed() const;                       // fastest wave, m/s (stable dt)
+//   const TransportProperties& transport() const;    // heat capacity, conductivity,
+//                                                    // diffusivity, T_ref (transport_properties.hpp)
 // and optionally
 //   named state variables for output (materials/state_variable.hpp);
 //   double dissipated_energy(const State&) const;    // J/m^3 dissipated so far (plastic work, damage)
 //   double expansion_work(const State&, const Voigt& sigma, const MaterialInput&) const;
 //                                                    // J/m^3 done on the body: -sigma : d eps_expansion
-// for the energy balance (engine/energy_balance.hpp).
+//                                                    // for the energy balance (engine/energy_balance.hpp);
+//   bool expands() const;                            // false: the engine skips expansion_work
+//   Eigen::Quaterniond material_axes(const State&) const;  // models with material axes: R, material
+//                                                    // to global; the conductivity and diffusivity turn with it
 // `update` is pure apart from its outputs: stress, state, and for reduced
-// stress states the out-of-plane strain components of deps. The engine
-// dispatches on this variant once per particle batch, never per particle.
+// stress states the out-of-plane strain components of deps. MaterialInput
+// carries the particle's temperature change and concentration when the
+// scene conducts heat or diffuses solvent; models with expansion take them
+// from there unless a uniform function of time drives it
+// (materials/expansion.hpp). The engine dispatches on this variant once per
+// particle batch, never per particle.
 // Adding a model is one new file and one line in the variant below.
 #pragma once
+#include <concepts>
 #include <string>
 #include <variant>
 #include <vector>
@@ -56,5 +66,14 @@ inline double wave_speed(const Material& m) {
   return std::visit([](const auto& model) { return model.wave_speed(); }, m);
 }
 inline const char* type_name(const Material& m) { return Materials::name_of(m); }
+inline const TransportProperties& transport(const Material& m) {
+  return std::visit([](const auto& model) -> const TransportProperties& { return model.transport(); }, m);
+}
+
+// A model whose transport tensors turn with its material axes.
+template <class Model>
+concept HasMaterialAxes = requires(const Model& m, const typename Model::State& s) {
+  { m.material_axes(s) } -> std::convertible_to<Eigen::Quaterniond>;
+};
 
 }  // namespace flowmpm

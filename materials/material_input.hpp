@@ -18,6 +18,16 @@ struct MaterialInput {
   // root of its area in 2D, its length in 1D; for size-dependent
   // regularisation (crack band).
   double length = 0.0;
+  // The particle's own temperature and solvent, when the scene conducts heat
+  // or diffuses solvent (tasks/transport.hpp); 0 otherwise. Models with
+  // expansion take them from here unless they are driven by a uniform
+  // function of time (materials/expansion.hpp).
+  double temperature_change = 0.0;  // T - T_ref at the end of the increment (K)
+  // The changes since the last update (since the stress-free state, T_ref
+  // and c = 0, before the first): what the rate-form models subtract.
+  double temperature_step = 0.0;    // change of T (K)
+  double concentration = 0.0;       // c at the end of the increment (weight fraction)
+  double concentration_step = 0.0;  // change of c
 };
 
 struct ParticleInit {

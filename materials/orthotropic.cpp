@@ -87,33 +87,9 @@ Orthotropic::Orthotropic(const Parameters& p) : parameters(p), S_n(compliance(p)
   c_max = std::sqrt(max_acoustic_eigenvalue(C_n, p.Gyz, p.Gxz, p.Gxy) / p.density);
 }
 
-void Orthotropic::read_expansion(ParameterTable& t, Parameters& p, std::size_t count,
-                                 const std::array<int, 3>& source) {
-  const std::string per_axis = count == 3 ? "one per material axis x, y, z" : "[axial, transverse]";
-  struct Driver {
-    const char* coefficients;
-    const char* driver;
-    const char* coefficient_what;
-    const char* driver_what;
-  };
-  const Driver drivers[2] = {
-      {"alpha", "temperature_change", "thermal expansion coefficients in 1/K",
-       "a temperature change in K"},
-      {"beta", "concentration", "solvent expansion coefficients per unit weight fraction",
-       "a solvent concentration (weight fraction)"}};
-  for (int k = 0; k < 2; ++k) {
-    const Driver& d = drivers[k];
-    if (!t.has(d.coefficients) && !t.has(d.driver)) continue;
-    if (!t.has(d.coefficients)) {
-      t.fail(d.coefficients, std::string(d.coefficient_what) + ", " + per_axis + " (" + d.driver +
-                                 " is given)");
-    }
-    if (!t.has(d.driver)) t.fail(d.driver, std::string(d.driver_what) + " (" + d.coefficients + " is given)");
-    const std::vector<double> values = t.numbers(d.coefficients, count);
-    std::array<double, 3>& target = k == 0 ? p.alpha : p.beta;
-    for (int i = 0; i < 3; ++i) target[i] = values[static_cast<std::size_t>(source[i])];
-    (k == 0 ? p.temperature_change : p.concentration) = t.time_function(d.driver, d.driver_what);
-  }
+void Orthotropic::read_transport_and_expansion(ParameterTable& t, Parameters& p, const AxisLayout& layout) {
+  p.transport = TransportProperties::read(t, layout);
+  p.expansion = Expansion::read(t, layout, p.transport);
 }
 
 Orthotropic Orthotropic::read(ParameterTable& t) {
@@ -154,7 +130,7 @@ Orthotropic Orthotropic::read(ParameterTable& t) {
     t.fail_table("the compliance is not positive definite: 1 - nuxy nuyx - nuyz nuzy - nuxz nuzx - "
                  "2 nuyx nuzy nuxz = " + readable_text(det) + " must be > 0; reduce the Poisson ratios");
   }
-  read_expansion(t, p, 3, {0, 1, 2});
+  read_transport_and_expansion(t, p, orthotropic_axes);
   return Orthotropic(p);
 }
 

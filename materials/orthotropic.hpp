@@ -7,8 +7,11 @@
 //                   [-nu_xz/Ex, -nu_yz/Ey, 1/Ez]],   C normal block = its inverse,
 //   sigma_yz = 2 Gyz eps_yz, sigma_xz = 2 Gxz eps_xz, sigma_xy = 2 Gxy eps_xy,
 // with nu_ij = -eps_j / eps_i under sigma_i alone and the reciprocity
-// nu_ij / E_i = nu_ji / E_j. dT and c are uniform, given in the case as
-// numbers or functions of time, evaluated at the end of the step.
+// nu_ij / E_i = nu_ji / E_j. dT = T - T_ref and c at the end of the step are
+// uniform functions of time or each particle's own conducted temperature
+// and diffused solvent (materials/expansion.hpp). The conductivity and the
+// diffusivity are diagonal along the material axes and turn with them
+// (materials/transport_properties.hpp, material_axes()).
 //
 // Material axes and objectivity: the state holds the rotation R of the
 // particle's material axes (columns: the axes in global coordinates) and
@@ -28,16 +31,16 @@
 // eps_zz = th_z - nu_xz (eps_xx - th_x); 1D cases have no material axes.
 #pragma once
 #include <array>
-#include <optional>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-#include "core/time_function.hpp"
 #include "core/voigt.hpp"
+#include "materials/expansion.hpp"
 #include "materials/material_input.hpp"
 #include "materials/rotation.hpp"
 #include "materials/stress_state.hpp"
+#include "materials/transport_properties.hpp"
 
 namespace flowmpm {
 
@@ -52,10 +55,8 @@ struct Orthotropic {
     double Gxy = 0.0, Gxz = 0.0, Gyz = 0.0;  // shear moduli (Pa)
     // Poisson ratios nu_xy, nu_xz, nu_yz (-); nu_yx, nu_zx, nu_zy follow by reciprocity.
     double nuxy = 0.0, nuxz = 0.0, nuyz = 0.0;
-    std::array<double, 3> alpha{};  // thermal expansion per material axis (1/K)
-    std::array<double, 3> beta{};   // solvent expansion per axis (per unit weight fraction)
-    std::optional<TimeFunction> temperature_change;  // dT(t), K; absent: no thermal strain
-    std::optional<TimeFunction> concentration;       // c(t), weight fraction; absent: none
+    TransportProperties transport;  // heat capacity, conductivity, diffusivity along the axes
+    Expansion expansion;            // alpha, beta along the axes and what drives them
   };
 
   struct State {
@@ -72,11 +73,8 @@ struct Orthotropic {
 
   // Reads and validates [materials.NAME] (type = "orthotropic").
   static Orthotropic read(ParameterTable& table);
-  // Reads `alpha` with `temperature_change` and `beta` with `concentration`
-  // (each pair both or neither): arrays of `count` values, of which
-  // material axis i takes value source[i].
-  static void read_expansion(ParameterTable& t, Parameters& p, std::size_t count,
-                             const std::array<int, 3>& source);
+  // Reads the transport properties and the expansion, laid out per `layout`.
+  static void read_transport_and_expansion(ParameterTable& t, Parameters& p, const AxisLayout& layout);
 
   // The normal block of the compliance S in material axes (1/Pa).
   static Eigen::Matrix3d compliance(const Parameters& p);
@@ -84,26 +82,16 @@ struct Orthotropic {
   State initial_state(const ParticleInit& init) const { return {{}, axes_rotation(init.axes_degrees)}; }
 
   double density() const { return parameters.density; }
+  const TransportProperties& transport() const { return parameters.transport; }
+  // R, the rotation from material to global axes: the conductivity and the
+  // diffusivity turn with it.
+  Eigen::Quaterniond material_axes(const State& state) const { return state.axes; }
 
   // The fastest plane wave in any direction: max over unit n of
   // sqrt(lambda_max(Gamma(n)) / rho), Gamma_ik = C_ijkl n_j n_l the acoustic
   // tensor (quasi-P wave). Independent of the axes' rotation; at least the
   // largest sqrt(C_ii / rho) of the stiffness diagonal.
   double wave_speed() const { return c_max; }
-
-  // alpha dT(t) + beta c(t) in material axes.
-  Eigen::Vector3d expansion_strain(double t) const {
-    Eigen::Vector3d th = Eigen::Vector3d::Zero();
-    if (parameters.temperature_change) {
-      const double dT = (*parameters.temperature_change)(t);
-      for (int i = 0; i < 3; ++i) th[i] += parameters.alpha[i] * dT;
-    }
-    if (parameters.concentration) {
-      const double c = (*parameters.concentration)(t);
-      for (int i = 0; i < 3; ++i) th[i] += parameters.beta[i] * c;
-    }
-    return th;
-  }
 
   // sigma = C (eps_m - th) in material axes.
   Voigt material_stress(const Voigt& e, const Eigen::Vector3d& th) const {
@@ -114,7 +102,7 @@ struct Orthotropic {
 
   template <StressState Kind>
   void update(State& state, Voigt& sigma, Voigt& deps, const MaterialInput& in) const {
-    const Eigen::Vector3d th = expansion_strain(in.t);
+    const Eigen::Vector3d th = parameters.expansion.strain(in);  // alpha dT + beta c, material axes
     Voigt& e = state.eps;
     if constexpr (Kind == StressState::uniaxial_stress) {
       e[0] += deps[0];
@@ -143,14 +131,15 @@ struct Orthotropic {
   }
 
   // Work done on the body by the expansion strains over one increment per
-  // unit volume (J/m^3): -sigma_m . (th(t) - th(t - dt)), sigma_m the normal
+  // unit volume (J/m^3): -sigma_m . (th(t) - th(t - dt)) (th driven by the
+  // uniform functions or the particle's own T and c), sigma_m the normal
   // stresses in material axes (the expansion strains have no shear). Held
   // fully, the strain th becomes elastic strain -th: the stored energy
   // grows by what the expansion did, -sigma : d th.
   double expansion_work(const State& state, const Voigt& sigma, const MaterialInput& in) const {
-    if (!parameters.temperature_change && !parameters.concentration) return 0.0;
+    if (!parameters.expansion.any()) return 0.0;
     const Voigt s = to_material(state.axes.toRotationMatrix(), sigma);
-    const Eigen::Vector3d d_th = expansion_strain(in.t) - expansion_strain(in.t - in.dt);
+    const Eigen::Vector3d d_th = parameters.expansion.strain(in) - parameters.expansion.strain_at_start(in);
     return -(s[0] * d_th[0] + s[1] * d_th[1] + s[2] * d_th[2]);
   }
 

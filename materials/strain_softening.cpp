@@ -25,6 +25,7 @@ StrainSoftening StrainSoftening::read(ParameterTable& t) {
     p.fracture_energy = t.number("fracture_energy");
     t.require(*p.fracture_energy > 0.0, "fracture_energy", "a positive fracture energy G_c in J/m^2");
   }
+  p.transport = TransportProperties::read(t, isotropic_axes);
   return StrainSoftening(p);
 }
 

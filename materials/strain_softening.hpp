@@ -39,6 +39,7 @@
 #include "materials/lame.hpp"
 #include "materials/state_variable.hpp"
 #include "materials/stress_state.hpp"
+#include "materials/transport_properties.hpp"
 
 namespace flowmpm {
 
@@ -56,6 +57,7 @@ struct StrainSoftening {
     // giving eps_f = 2 G_c / (E eps_i h) per particle.
     std::optional<double> failure_strain;
     std::optional<double> fracture_energy;
+    TransportProperties transport;  // heat capacity, conductivity, diffusivity (scalars)
   };
   struct State {
     Voigt eps{};            // total strain
@@ -87,6 +89,7 @@ struct StrainSoftening {
   State initial_state(const ParticleInit& init) const;
 
   double density() const { return parameters.density; }
+  const TransportProperties& transport() const { return parameters.transport; }
   // P wave of the undamaged material, sqrt((lambda + 2 mu) / rho) (m/s).
   double wave_speed() const { return std::sqrt((lambda + 2.0 * mu) / parameters.density); }
 

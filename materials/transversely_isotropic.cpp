@@ -53,9 +53,8 @@ TransverselyIsotropic TransverselyIsotropic::read(ParameterTable& t) {
     p.nuxy = nuTA;  // nu_xy = nu_yx Ex / Ey
     p.nuyz = nuAT;
   }
-  // alpha = [axial, transverse], beta likewise.
-  const int A = 0, T = 1;
-  read_expansion(t, p, 2, axis == "z" ? std::array<int, 3>{T, T, A} : std::array<int, 3>{T, A, T});
+  // alpha = [axial, transverse]; beta, conductivity and diffusivity likewise.
+  read_transport_and_expansion(t, p, axis == "z" ? transverse_axes_z : transverse_axes_y);
   return TransverselyIsotropic(Orthotropic(p));
 }
 

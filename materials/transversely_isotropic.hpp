@@ -9,6 +9,8 @@
 //         nu_zx = nu_zy = nuAT.
 // Axis y: Ex = Ez = ET, Ey = EA, Gxy = Gyz = GA, Gxz = GT, nu_xz = nuT,
 //         nu_yx = nu_yz = nuAT.
+// The expansion coefficients alpha, beta, the conductivity and the
+// diffusivity are given as [axial, transverse].
 // In 2D the axes turn about z only: axis "z" puts A normal to the plane,
 // axis "y" (with the body's material_axes angle) in the plane.
 #pragma once

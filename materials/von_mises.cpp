@@ -39,6 +39,8 @@ VonMises VonMises::read(ParameterTable& t) {
               "a hardening exponent n in (0, 1]");
     if (t.has("hardening_modulus")) t.fail("hardening_modulus", "no hardening_modulus with hardening = \"power\"");
   }
+  p.transport = TransportProperties::read(t, isotropic_axes);
+  p.expansion = Expansion::read(t, isotropic_axes, p.transport);
   return VonMises(p);
 }
 

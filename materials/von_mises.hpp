@@ -26,17 +26,22 @@
 // sigma_Y) / (E + H) (Newton for the power law), and the lateral strains
 // d eps_yy = d eps_zz = -nu d eps_e - d eps_p / 2 (plastic incompressibility).
 // The stress turns with the material (rotation.hpp, Hughes-Winget), so a
-// rigid rotation rotates it and does not load it.
+// rigid rotation rotates it and does not load it. The isotropic expansion
+// increment th = alpha d(T - T_ref) + beta dc takes no stress: every
+// return above sees the mechanical increment d eps - th I
+// (materials/expansion.hpp).
 #pragma once
 #include <array>
 #include <cmath>
 
 #include "core/voigt.hpp"
+#include "materials/expansion.hpp"
+#include "materials/lame.hpp"
 #include "materials/material_input.hpp"
 #include "materials/rotation.hpp"
-#include "materials/lame.hpp"
 #include "materials/state_variable.hpp"
 #include "materials/stress_state.hpp"
+#include "materials/transport_properties.hpp"
 
 namespace flowmpm {
 
@@ -57,6 +62,8 @@ struct VonMises {
     double hardening_modulus = 0.0;   // linear: H = d sigma_Y / d eps_p (Pa); 0: perfectly plastic
     double reference_strain = 0.0;    // power: eps_0 (-)
     double hardening_exponent = 0.0;  // power: n (-)
+    TransportProperties transport;    // heat capacity, conductivity, diffusivity (scalars)
+    Expansion expansion;              // isotropic alpha, beta and what drives them
   };
   struct State {
     double eps_p = 0.0;  // equivalent plastic strain, integral of sqrt(2/3 d eps_p : d eps_p)
@@ -79,6 +86,7 @@ struct VonMises {
   static VonMises read(ParameterTable& table);
 
   double density() const { return parameters.density; }
+  const TransportProperties& transport() const { return parameters.transport; }
   // P wave of the elastic material, sqrt((lambda + 2 mu) / rho) (m/s).
   double wave_speed() const { return std::sqrt((lambda + 2.0 * mu) / parameters.density); }
 
@@ -142,6 +150,49 @@ struct VonMises {
 
   template <StressState Kind>
   void update(State& state, Voigt& sigma, Voigt& deps, const MaterialInput& in) const {
+    if (!parameters.expansion.any()) return mechanical_update<Kind>(state, sigma, deps, in);
+    // The return sees the mechanical increment d eps - th I; the total is restored after.
+    const double th = parameters.expansion.isotropic_step(in);
+    for (int i = 0; i < 3; ++i) deps[i] -= th;
+    mechanical_update<Kind>(state, sigma, deps, in);
+    for (int i = 0; i < 3; ++i) deps[i] += th;
+  }
+
+  // Elastic strain energy per unit volume, sigma : C^-1 : sigma / 2 =
+  // p^2 / (2 K) + s : s / (4 G) (any stress state: the stress holds the
+  // elastic strain; the plastic work is dissipated).
+  double stored_energy(const State&, const Voigt& sigma, const Voigt&) const {
+    const double p = (sigma[0] + sigma[1] + sigma[2]) / 3.0;
+    Voigt s = sigma;
+    for (int i = 0; i < 3; ++i) s[i] -= p;
+    return p * p / (2.0 * K) + double_contraction(s, s) / (4.0 * mu);
+  }
+
+  // Work done on the body by the isotropic expansion over one increment per
+  // unit volume (J/m^3), -tr(sigma) th, for the energy balance.
+  double expansion_work(const State&, const Voigt& sigma, const MaterialInput& in) const {
+    return parameters.expansion.isotropic_work(sigma, in);
+  }
+  bool expands() const { return parameters.expansion.any(); }
+
+  // Plastic work per unit volume (J/m^3), the integral of sigma_Y(eps_p)
+  // d eps_p (the radial return keeps the stress on the yield surface):
+  // linear sigma_0 eps_p + H eps_p^2 / 2; power sigma_0 eps_0 / (n + 1)
+  // ((1 + eps_p / eps_0)^(n + 1) - 1).
+  double dissipated_energy(const State& state) const {
+    const Parameters& p = parameters;
+    if (p.hardening == Hardening::linear) {
+      return p.yield_stress * state.eps_p + 0.5 * p.hardening_modulus * state.eps_p * state.eps_p;
+    }
+    const double n1 = p.hardening_exponent + 1.0;
+    return p.yield_stress * p.reference_strain / n1 * (std::pow(1.0 + state.eps_p / p.reference_strain, n1) - 1.0);
+  }
+
+ private:
+  // The update for a mechanical strain increment: elastic trial and return.
+  template <StressState Kind>
+  [[gnu::always_inline]] void mechanical_update(State& state, Voigt& sigma, Voigt& deps,
+                                                const MaterialInput& in) const {
     const double E = parameters.youngs_modulus, nu = parameters.poisson_ratio;
     if constexpr (Kind == StressState::uniaxial_stress) {
       const double trial = sigma[0] + E * deps[0], q = std::abs(trial);
@@ -183,29 +234,6 @@ struct VonMises {
         state.eps_p += dep;
       }
     }
-  }
-
-  // Elastic strain energy per unit volume, sigma : C^-1 : sigma / 2 =
-  // p^2 / (2 K) + s : s / (4 G) (any stress state: the stress holds the
-  // elastic strain; the plastic work is dissipated).
-  double stored_energy(const State&, const Voigt& sigma, const Voigt&) const {
-    const double p = (sigma[0] + sigma[1] + sigma[2]) / 3.0;
-    Voigt s = sigma;
-    for (int i = 0; i < 3; ++i) s[i] -= p;
-    return p * p / (2.0 * K) + double_contraction(s, s) / (4.0 * mu);
-  }
-
-  // Plastic work per unit volume (J/m^3), the integral of sigma_Y(eps_p)
-  // d eps_p (the radial return keeps the stress on the yield surface):
-  // linear sigma_0 eps_p + H eps_p^2 / 2; power sigma_0 eps_0 / (n + 1)
-  // ((1 + eps_p / eps_0)^(n + 1) - 1).
-  double dissipated_energy(const State& state) const {
-    const Parameters& p = parameters;
-    if (p.hardening == Hardening::linear) {
-      return p.yield_stress * state.eps_p + 0.5 * p.hardening_modulus * state.eps_p * state.eps_p;
-    }
-    const double n1 = p.hardening_exponent + 1.0;
-    return p.yield_stress * p.reference_strain / n1 * (std::pow(1.0 + state.eps_p / p.reference_strain, n1) - 1.0);
   }
 };
 

@@ -4,6 +4,9 @@
 //             with v_I the velocity after grid_integrate.
 // g2p_stress: L_p = sum_I v_I (x) dN_Ip, d eps = sym(L_p) dt, the material
 //             update sigma(d eps), eps += d eps, V_p *= 1 + tr(d eps).
+// The material update sees the particle's own temperature and
+// concentration when the scene carries them (tasks/transport.hpp, whose
+// branch of the step graph joins before this stage).
 // USL does both in one pass over the particles, with N and dN at the
 // positions of the start of the step: the stencil of the step's p2g, as in
 // CB-Geo mpm. MUSL's g2p_stress follows the remap, so it and the remap see
@@ -19,13 +22,26 @@ namespace flowmpm {
 
 namespace detail {
 
+// A batch's particle temperatures and concentrations for the material
+// update (null when the scene carries none), and its material's T_ref.
+// The steps are the changes since the last stress update (since the
+// stress-free state before the first): the update takes and clears them.
+struct TransportedInput {
+  const double* temperature = nullptr;
+  double* temperature_step = nullptr;
+  const double* concentration = nullptr;
+  double* concentration_step = nullptr;
+  double reference_temperature = 0.0;  // K
+};
+
 // The material update of particle p for its velocity gradient L
 // (g2p_stress). Returns the work done on it by its expansion strains over
-// the step (J), -V sigma_mid : d eps_expansion, for models with expansion.
-template <int D, class Shape, StressState Kind, class MaterialModel>
+// the step (J), -V sigma_mid : d eps_expansion, with `ExpansionWork`.
+template <int D, class Shape, StressState Kind, bool ExpansionWork, class MaterialModel>
 [[gnu::always_inline]] inline double update_particle_stress(DiscreteSystem<D, Shape>& system, ParticleBatch<D>& b, std::size_t p,
                                                          const double (&L)[D][D], const MaterialModel& material,
-                                                         typename MaterialModel::State& state) {
+                                                         typename MaterialModel::State& state,
+                                                         const TransportedInput& transported) {
   const double dt = system.dt;
   Voigt deps{};
   for (int i = 0; i < D; ++i)
@@ -36,8 +52,18 @@ template <int D, class Shape, StressState Kind, class MaterialModel>
   input.length = b.particle_length;
   for (int i = 0; i < D; ++i)
     for (int j = 0; j < D; ++j) input.dL(i, j) = L[i][j] * dt;
+  if (transported.temperature) {
+    input.temperature_change = transported.temperature[p] - transported.reference_temperature;
+    input.temperature_step = transported.temperature_step[p];
+    transported.temperature_step[p] = 0.0;
+  }
+  if (transported.concentration) {
+    input.concentration = transported.concentration[p];
+    input.concentration_step = transported.concentration_step[p];
+    transported.concentration_step[p] = 0.0;
+  }
   double expansion_work = 0.0;
-  if constexpr (requires { material.expansion_work(state, b.stress[p], input); }) {
+  if constexpr (ExpansionWork) {
     const Voigt before = b.stress[p];
     material.template update<Kind>(state, b.stress[p], deps, input);
     Voigt mid;
@@ -64,11 +90,40 @@ void with_stress_update(DiscreteSystem<D, Shape>& system, ParticleBatch<D>& b, F
       [&](const auto& material) {
         using M = std::decay_t<decltype(material)>;
         auto& states = std::get<StateArray<M>>(b.states);
+        TransportedInput transported;
+        if (!b.temperature.empty()) {
+          transported.temperature = b.temperature.data();
+          transported.temperature_step = b.temperature_step.data();
+          transported.reference_temperature = material.transport().reference_temperature.value_or(0.0);
+        }
+        if (!b.concentration.empty()) {
+          transported.concentration = b.concentration.data();
+          transported.concentration_step = b.concentration_step.data();
+        }
+        // The expansion work, for models that can do it; a model that says
+        // it does not expand (expands()) skips it, its update alone as before.
         auto for_state = [&]<StressState Kind>() {
           typename M::State no_state{};
-          f([&](std::size_t p, const double(&L)[D][D]) {
-            return update_particle_stress<D, Shape, Kind>(system, b, p, L, material, states.empty() ? no_state : states[p]);
-          });
+          auto with_work = [&]<bool Work>() {
+            f([&](std::size_t p, const double(&L)[D][D]) {
+              return update_particle_stress<D, Shape, Kind, Work>(system, b, p, L, material,
+                                                                  states.empty() ? no_state : states[p], transported);
+            });
+          };
+          constexpr bool can_work = requires(const typename M::State& s, const Voigt& v, const MaterialInput& in) {
+            material.expansion_work(s, v, in);
+          };
+          if constexpr (!can_work) {
+            with_work.template operator()<false>();
+          } else if constexpr (requires { material.expands(); }) {
+            if (material.expands()) {
+              with_work.template operator()<true>();
+            } else {
+              with_work.template operator()<false>();
+            }
+          } else {
+            with_work.template operator()<true>();
+          }
         };
         if constexpr (D == 3) {
           for_state.template operator()<StressState::three_d>();

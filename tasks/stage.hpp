@@ -8,10 +8,24 @@
 
 namespace flowmpm {
 
-enum class Stage { p2g_momentum, p2g_force, grid_velocity, grid_integrate, g2p_motion, g2p_stress, remap };
+enum class Stage {
+  p2g_momentum,
+  p2g_force,
+  grid_velocity,
+  grid_integrate,
+  g2p_motion,
+  g2p_stress,
+  remap,
+  // Heat and solvent (tasks/transport.hpp), only in scenes that carry them.
+  transport_p2g,
+  transport_flux,
+  transport_update,
+  transport_g2p,
+};
 
-inline constexpr std::array<const char*, 7> stage_names = {
-    "p2g_momentum", "p2g_force", "grid_velocity", "grid_integrate", "g2p_motion", "g2p_stress", "remap"};
+inline constexpr std::array<const char*, 11> stage_names = {
+    "p2g_momentum", "p2g_force",     "grid_velocity",  "grid_integrate",   "g2p_motion",   "g2p_stress",
+    "remap",        "transport_p2g", "transport_flux", "transport_update", "transport_g2p"};
 
 inline const char* stage_name(Stage s) { return stage_names[static_cast<std::size_t>(s)]; }
 

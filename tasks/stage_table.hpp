@@ -11,6 +11,7 @@
 #include "tasks/grid_update.hpp"
 #include "tasks/p2g.hpp"
 #include "tasks/stage.hpp"
+#include "tasks/transport.hpp"
 
 namespace flowmpm {
 
@@ -35,6 +36,10 @@ StagePass<D, Shape> stage_pass(const StageGroup& group) {
       {{Stage::g2p_motion, Stage::g2p_stress}, &g2p_motion_and_stress<D, Shape>},
       // MUSL: mass and momentum mapped again from the updated particles.
       {{Stage::remap}, &p2g_momentum<D, Shape>},
+      {{Stage::transport_p2g}, &transport_p2g<D, Shape>},
+      {{Stage::transport_flux}, &transport_flux<D, Shape>},
+      {{Stage::transport_update}, &transport_update<D, Shape>},
+      {{Stage::transport_g2p}, &transport_g2p<D, Shape>},
   };
   for (const Entry& e : table)
     if (e.stages == group) return e.pass;

@@ -11,7 +11,15 @@ using namespace flowmpm;
 
 namespace {
 
-const LinearElastic steel_like(LinearElastic::Parameters{1.0, 1000.0, 0.2});
+LinearElastic::Parameters steel_like_parameters() {
+  LinearElastic::Parameters p;  // no transport, no expansion
+  p.density = 1.0;
+  p.youngs_modulus = 1000.0;
+  p.poisson_ratio = 0.2;
+  return p;
+}
+
+const LinearElastic steel_like(steel_like_parameters());
 
 template <StressState S>
 Voigt drive(const Voigt& total_strain, Voigt& strain_out) {

@@ -79,7 +79,8 @@ ParticleSnapshot make_snapshot(std::int64_t step, double time, std::size_t count
   s.time = time;
   s.count = count;
   for (const OutputField& f : builtin_output_fields) {
-    for (const char* name : {"position", "velocity", "stress", "strain", "volume", "mass", "material"})
+    for (const char* name :
+         {"position", "velocity", "stress", "strain", "volume", "mass", "material", "temperature", "concentration"})
       if (std::string_view(f.name) == name) s.fields.push_back({f, {}, {}});
   }
   for (std::size_t i = 0; i < count; ++i) {
@@ -95,6 +96,8 @@ ParticleSnapshot make_snapshot(std::int64_t step, double time, std::size_t count
     field(s, "volume").real.push_back(1e-9 * (1.0 + x / 3.0));
     field(s, "mass").real.push_back(2.7e-6 * (1.0 + x / 11.0));
     field(s, "material").integer.push_back(static_cast<std::int32_t>(i % 3));
+    field(s, "temperature").real.push_back(293.15 + x / 13.0);
+    field(s, "concentration").real.push_back(0.01 * (1.0 + x / 17.0));
   }
   return s;
 }
@@ -186,7 +189,7 @@ TEST_CASE("ResultsH5 writes steps that read back exactly") {
     CHECK(results.written()[1].time == second.time);
     CHECK(results.written()[1].count == 4);
     CHECK(results.index_length() == 5);
-    const std::uintmax_t per_particle = (3 + 3 + 6 + 6 + 1 + 1) * sizeof(double) + 4;
+    const std::uintmax_t per_particle = (3 + 3 + 6 + 6 + 1 + 1 + 1 + 1) * sizeof(double) + 4;
     // ... and the particle index, 4 bytes per particle of the first step, once.
     CHECK(results.bytes_written() == (5 + 4) * per_particle + 5 * 4);
     // More particles than the first step: refused, nothing written.

@@ -8,10 +8,22 @@
 // runs the two p2g stages, and USL's two g2p stages, in one pass over the
 // particles ("&" in the wiring's description); the observer still sees each
 // stage, in the order above.
+// A scene that conducts heat or diffuses solvent adds the transport branch
+//   transport_p2g -> transport_flux -> transport_update -> transport_g2p,
+// which starts with the step beside the momentum stages and joins before
+// the first node that writes particles (USL: g2p_motion & g2p_stress; USF:
+// g2p_stress; MUSL: g2p_motion): its stages come in that order, all before
+// the join, in any interleaving with the momentum stages before it, and
+// the two branches do run at the same time.
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <mutex>
+#include <thread>
+
+#include <tbb/global_control.h>
 
 #include "discretisation/shape_linear.hpp"
 #include "engine/simulation.hpp"
@@ -83,4 +95,100 @@ TEST_CASE("the graph runs each stage node once per step, for many steps") {
   CHECK(calls == 50 * 8);
   CHECK(sim.system().step == 50);
   CHECK(sim.system().t == doctest::Approx(0.05).epsilon(1e-12));
+}
+
+namespace {
+
+// The stages of one step of the slab conduction case (a transport scene)
+// under `scheme`.
+std::vector<Stage> recorded_transport_order(const std::string& scheme, bool serial) {
+  const Case c = read_case(testing::config("verification/slab_conduction.toml"), {"analysis.scheme=" + scheme});
+  std::mutex mutex;
+  std::vector<Stage> order;
+  auto sim = testing::simulation<1, LinearShape>(c, [&](Stage s) {
+    std::lock_guard lock(mutex);
+    order.push_back(s);
+  });
+  serial ? sim.advance_serial() : sim.advance();
+  return order;
+}
+
+// The transport stages in their order, all before `join`; the other stages
+// in the order of the mechanical wiring.
+void check_transport_order(const std::vector<Stage>& got, const std::vector<Stage>& mechanical, Stage join) {
+  const std::vector<Stage> transport{Stage::transport_p2g, Stage::transport_flux, Stage::transport_update,
+                                     Stage::transport_g2p};
+  std::vector<Stage> got_transport, got_mechanical;
+  for (Stage s : got) (std::ranges::find(transport, s) != transport.end() ? got_transport : got_mechanical).push_back(s);
+  CHECK(got_transport == transport);
+  check_order(got_mechanical, mechanical, 2);
+  const auto last_transport = std::ranges::find(got, Stage::transport_g2p) - got.begin();
+  const auto first_join = std::ranges::find(got, join) - got.begin();
+  CHECK(last_transport < first_join);
+}
+
+}  // namespace
+
+TEST_CASE("the transport branch: beside the momentum stages, joining before the first g2p node") {
+  using enum Stage;
+  const std::string branch = " || transport_p2g -> transport_flux -> transport_update -> transport_g2p -> ";
+  CHECK(with_transport(scheme_named("usl").wiring).describe() ==
+        "p2g_momentum & p2g_force -> grid_velocity -> grid_integrate -> g2p_motion & g2p_stress" + branch +
+            "g2p_motion & g2p_stress");
+  CHECK(with_transport(scheme_named("usf").wiring).describe() ==
+        "p2g_momentum -> grid_velocity -> g2p_stress -> p2g_force -> grid_integrate -> g2p_motion" + branch +
+            "g2p_stress");
+  CHECK(with_transport(scheme_named("musl").wiring).describe() ==
+        "p2g_momentum & p2g_force -> grid_velocity -> grid_integrate -> g2p_motion -> remap -> grid_velocity -> "
+        "g2p_stress" + branch + "g2p_motion");
+  // One after the other (bench/): the transport chain, then the mechanics.
+  CHECK(with_transport(scheme_named("usl").wiring, TransportBranch::before).describe() ==
+        "transport_p2g -> transport_flux -> transport_update -> transport_g2p -> p2g_momentum & p2g_force -> "
+        "grid_velocity -> grid_integrate -> g2p_motion & g2p_stress");
+  for (bool serial : {false, true}) {
+    CAPTURE(serial);
+    check_transport_order(recorded_transport_order("usl", serial),
+                          {p2g_momentum, p2g_force, grid_velocity, grid_integrate, g2p_motion, g2p_stress}, g2p_motion);
+    check_transport_order(recorded_transport_order("usf", serial),
+                          {p2g_momentum, grid_velocity, g2p_stress, p2g_force, grid_integrate, g2p_motion}, g2p_stress);
+    check_transport_order(recorded_transport_order("musl", serial),
+                          {p2g_momentum, p2g_force, grid_velocity, grid_integrate, g2p_motion, remap, grid_velocity,
+                           g2p_stress},
+                          g2p_motion);
+  }
+  // A scene without transport keeps the scheme's wiring: no branch.
+  const Case plain = read_case(testing::config("uniaxial_stress/case1_usl.toml"));
+  CHECK(testing::simulation<3, LinearShape>(plain).graph().wiring().nodes.size() == 4);
+}
+
+TEST_CASE("the transport branch and the momentum stages run at the same time") {
+  // On 2 threads, transport_p2g and p2g_momentum each wait (up to 10 s) for
+  // the other to have started: they meet only if the graph runs them side
+  // by side.
+  tbb::global_control two(tbb::global_control::max_allowed_parallelism, 2);
+  const Case c = read_case(testing::config("verification/slab_conduction.toml"));
+  std::atomic<bool> transport_started{false}, momentum_started{false}, met{true};
+  auto wait_for = [&](std::atomic<bool>& other) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+    while (!other.load()) {
+      if (std::chrono::steady_clock::now() > deadline) {
+        met = false;
+        return;
+      }
+      std::this_thread::yield();
+    }
+  };
+  auto sim = testing::simulation<1, LinearShape>(c, [&](Stage s) {
+    if (s == Stage::transport_p2g) {
+      transport_started = true;
+      wait_for(momentum_started);
+    } else if (s == Stage::p2g_momentum) {
+      momentum_started = true;
+      wait_for(transport_started);
+    }
+  });
+  sim.advance();
+  CHECK(transport_started);
+  CHECK(momentum_started);
+  CHECK(met);
 }

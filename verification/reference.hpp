@@ -13,11 +13,16 @@
 #include "verification/axial_vibration.hpp"
 #include "verification/column_self_weight.hpp"
 #include "verification/elastic_wave.hpp"
+#include "verification/slab_transport.hpp"
+#include "verification/swelling_bending.hpp"
+#include "verification/swelling_slab.hpp"
+#include "verification/thermal_stress.hpp"
 #include "verification/uniaxial_stress.hpp"
 
 namespace flowmpm {
 
-using ReferenceSolution = std::variant<AxialVibration, ElasticWave, UniaxialStress, ColumnSelfWeight>;
+using ReferenceSolution = std::variant<AxialVibration, ElasticWave, UniaxialStress, ColumnSelfWeight, SlabTransport,
+                                       ThermalStress, SwellingSlab, SwellingBending>;
 using ReferenceSolutions = Registry<ReferenceSolution>;
 
 class Reference {
