@@ -45,6 +45,12 @@ class Reference {
   std::map<std::string, double> errors() const {
     return std::visit([](const auto& s) { return s.errors(); }, solution_);
   }
+  // Calls f(name, value) for what the samples have accumulated, which a
+  // checkpoint saves and a restart restores (engine/state_records.hpp).
+  template <class F>
+  void visit_state(F&& f) {
+    std::visit([&](auto& s) { s.visit_state(f); }, solution_);
+  }
 
  private:
   explicit Reference(ReferenceSolution solution) : solution_(std::move(solution)) {}
