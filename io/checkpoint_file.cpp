@@ -4,7 +4,6 @@
 #include <cstdint>
 #include <cstring>
 #include <fstream>
-#include <sstream>
 #include <string_view>
 
 #include "core/errors.hpp"
@@ -56,11 +55,11 @@ void write_checkpoint(const std::filesystem::path& path, const StateRecords& rec
 }
 
 StateRecords read_checkpoint(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in.is_open()) throw CaseError(path.string() + ": cannot read the checkpoint");
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  const std::string text = buffer.str();
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  std::string text(in.is_open() ? static_cast<std::size_t>(in.tellg()) : 0, '\0');
+  if (!in.is_open() || !in.seekg(0).read(text.data(), static_cast<std::streamsize>(text.size()))) {
+    throw CaseError(path.string() + ": cannot read the checkpoint");
+  }
   const auto damaged = [&](const std::string& why) {
     return CaseError(path.string() + ": a damaged checkpoint (" + why + "); restart from the beginning");
   };
