@@ -4,7 +4,6 @@
 // are coloured by the parity of their block index (2^D colours) so that
 // blocks of one colour share no node (see discretisation/blocks.hpp).
 #pragma once
-#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <vector>
@@ -55,13 +54,6 @@ struct Grid {
   }
 
   std::size_t node_count() const { return mass.size(); }
-
-  // Sets every nodal value to 0 (the active box is kept).
-  void clear_values() {
-    for (std::vector<double>* field : {&mass, &stiffness}) std::ranges::fill(*field, 0.0);
-    for (VectorField* field : {&momentum, &force, &velocity, &velocity_change})
-      for (auto& component : *field) std::ranges::fill(component, 0.0);
-  }
 
   [[gnu::always_inline]] std::size_t node_index(const Index<D>& i) const {
     std::size_t index = static_cast<std::size_t>(i[D - 1]);

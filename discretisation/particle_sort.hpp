@@ -86,11 +86,6 @@ void sort_particles(DiscreteSystem<D, Shape>& system) {
     system.grid.active_hi[d] =
         std::min(grid.cells[d], (hi[d] + 1) * B - 1 + Layout::drift_limit + Shape::reach_above);
   }
-  // No nodal value outlives the sort: a node that leaves the active box
-  // would otherwise keep its last values, which a constraint's reaction or
-  // a mirror plane reads. So every nodal value a step reads is computed
-  // from the particles in that step (a checkpoint stores no grid).
-  system.grid.clear_values();
   system.flags.resort_needed = false;
   ++system.sorts;
 }

@@ -4,10 +4,16 @@
 // column (the order of the sort decides the order of every nodal sum, so
 // a continuation in another order would differ in the last bits), the
 // block lists and active node box of the last sort, the sort counter,
-// whether a re-sort is due, and the constraints' reactions.
-// The grid's nodal values do not carry: each step computes those inside
-// the active box afresh from the particles, and the sort clears the rest
-// (discretisation/particle_sort.hpp).
+// whether a re-sort is due, and the constraints' reactions over the last
+// step (which the diagnostics report).
+// The grid's nodal values do not carry. Each step clears the nodes of the
+// active box before mapping to them and computes there every value it
+// reads. A node leaves the active box at a re-sort only when no particle
+// reached it in the step before (the box reaches drift_limit >= 2 cells
+// beyond the blocks, and a particle moves at most one cell per step:
+// discretisation/blocks.hpp), so what it keeps is zero mass, momentum and
+// force, and on a massless node velocities, which count for nothing (the
+// reactions weigh them by its zero mass).
 #pragma once
 #include <string>
 #include <type_traits>

@@ -61,14 +61,14 @@ StateRecords read_checkpoint(const std::filesystem::path& path) {
     throw CaseError(path.string() + ": cannot read the checkpoint");
   }
   const auto damaged = [&](const std::string& why) {
-    return CaseError(path.string() + ": a damaged checkpoint (" + why + "); restart from the beginning");
+    return CaseError(path.string() + ": a damaged checkpoint (" + why + ")");
   };
-  if (text.compare(0, magic.size(), magic) != 0) throw damaged("it does not start with \"flowmpm checkpoint 1\"");
-  if (text.size() < magic.size() + sizeof(std::uint64_t)) throw damaged("cut short");
+  if (text.compare(0, magic.size(), magic) != 0) throw damaged("it does not begin as a flowmpm checkpoint does");
+  if (text.size() < magic.size() + sizeof(std::uint64_t)) throw damaged("cut short: it has no digest");
   const std::string_view body(text.data(), text.size() - sizeof(std::uint64_t));
   std::uint64_t digest = 0;
   std::memcpy(&digest, text.data() + body.size(), sizeof digest);
-  if (fnv1a(body) != digest) throw damaged("its digest does not match its contents: cut short or overwritten");
+  if (fnv1a(body) != digest) throw damaged("cut short or overwritten: its contents do not match its digest");
   StateRecords records;
   Cursor cursor{body.substr(magic.size())};
   while (!cursor.rest.empty()) {
@@ -77,7 +77,7 @@ StateRecords read_checkpoint(const std::filesystem::path& path) {
     std::string_view name, value;
     if (!cursor.take(name_size) || !cursor.take(name_size, name) || !cursor.take(value_size) ||
         !cursor.take(value_size, value)) {
-      throw damaged("a record runs past the end");
+      throw damaged("a record runs past its end");
     }
     records.emplace(name, value);
   }

@@ -356,8 +356,9 @@ TEST_CASE("von_mises plate with loaded node sets: reactions and plastic strain c
 }
 
 TEST_CASE("a blow-up after the restart writes the same last good state") {
-  // The bar of test_hard_cases that gravity pushes past the guard: the last
-  // good state (kept every 10 steps) carries across a checkpoint at step 155.
+  // The bar of test_hard_cases that gravity pushes past the guard at step
+  // 240: the last good state, kept at step 230 (every 10 steps), carries
+  // across the checkpoint at step 235.
   TempDir dir("flowmpm_restart");
   const fs::path file = dir.path / "blow_up.toml";
   write_text(file, R"(
@@ -384,7 +385,7 @@ particles_per_cell = 2
 [output]
 every = 50
 )");
-  check_restart_matches(dir, file, 205, {}, 2);
+  check_restart_matches(dir, file, 235, {}, 2);
   CHECK(contains(read_text(dir.path / "restarted" / "run.log"), "the last good state (step 230"));
 }
 
@@ -578,4 +579,20 @@ TEST_CASE("a restart that cannot be made says why in one line, exits 1 and write
   CHECK(fresh.status == 0);
   CHECK(contains(fresh.output, "this run starts afresh and replaces it"));
   CHECK_FALSE(fs::exists(done / checkpoint_file_name));
+}
+
+TEST_CASE("a sweep's case whose checkpoint does not fit starts afresh") {
+  TempDir dir("flowmpm_restart");
+  write_text(dir.path / "sweep.toml",
+             "base = \"" + config_file("materials/von_mises_plate.toml").string() + "\"\noutput = \"out\"\n");
+  const fs::path folder = dir.path / "out" / "cases" / "000";
+  fs::create_directories(folder);
+  write_text(folder / checkpoint_file_name, "not a checkpoint");
+  const Result r = run_flowmpm({"sweep", "sweep.toml", "--threads", "1"}, dir.path);
+  REQUIRE_MESSAGE(r.status == 0, r.output);
+  const std::string log = read_text(folder / "run.log");
+  CHECK(contains(log, "a damaged checkpoint"));
+  CHECK(contains(log, "this run starts afresh and replaces it"));
+  CHECK_FALSE(fs::exists(folder / checkpoint_file_name));
+  CHECK(contains(read_text(folder / "sweep_row.txt"), "completed"));
 }
