@@ -129,7 +129,7 @@ std::vector<std::string> with_sets(std::vector<std::string> args, const std::vec
 // checkpoint every `k` steps (dir/restarted), then restarts the second run
 // from its checkpoint at step `k`: both must give the same results.h5,
 // results.xdmf and timeseries.csv. `status`: the runs' exit status (2 for a
-// blow-up).
+// blow-up, whose run writes no output step after k).
 void check_restart_matches(const TempDir& dir, const fs::path& file, std::int64_t k,
                            const std::vector<std::string>& sets = {}, int status = 0) {
   const fs::path plain = dir.path / "uninterrupted", restarted = dir.path / "restarted";
@@ -159,7 +159,7 @@ void check_restart_matches(const TempDir& dir, const fs::path& file, std::int64_
     CHECK(got.at(key) == bytes);
     after_k += std::stoll(key.substr(0, 8)) > k;
   }
-  CHECK(after_k > 0);
+  CHECK((after_k > 0 || status == 2));
   CHECK(before == got);  // and as the first run wrote them before the restart
   CHECK(h5diff(plain / "results.h5", restarted / "results.h5") == 0);
   CHECK(read_text(plain / "timeseries.csv") == read_text(restarted / "timeseries.csv"));
@@ -386,6 +386,12 @@ particles_per_cell = 2
 every = 50
 )");
   check_restart_matches(dir, file, 235, {}, 2);
+  // The restart removed step 230 (after the last output step, 200) and
+  // wrote it again from the state the checkpoint carried.
+  CHECK(contains(read_text(dir.path / "restarted" / "run.log"),
+                 "restart from the checkpoint at step 235 (t = 0.146875 s), " +
+                     (dir.path / "restarted" / checkpoint_file_name).string() +
+                     "; results.h5, results.xdmf and timeseries.csv continue after its output step 200"));
   CHECK(contains(read_text(dir.path / "restarted" / "run.log"), "the last good state (step 230"));
 }
 
@@ -569,6 +575,11 @@ TEST_CASE("a restart that cannot be made says why in one line, exits 1 and write
   write_text(short_csv / "timeseries.csv", lines_of(read_text(done / "timeseries.csv")).at(0) + "\n");
   refused(short_csv, with_every({"run", plate, "--restart", short_csv.string()}),
           "timeseries.csv: holds 0 rows up to step 2400, not the 7 the checkpoint was written after");
+
+  const Result negative = run({"check", plate, "--set", "output.checkpoint_every=-5"});
+  CHECK(negative.status == 1);
+  CHECK_MESSAGE(contains(negative.output, "output.checkpoint_every: expected a number of steps >= 0 between checkpoints"),
+                negative.output);
 
   const Result both = run(with_every({"run", plate, "--output", done.string(), "--restart", done.string()}));
   CHECK(both.status == 1);
