@@ -24,8 +24,8 @@
 #include <vector>
 
 #include "engine/state_records.hpp"
-#include "materials/material.hpp"
 #include "io/checkpoint_file.hpp"
+#include "materials/material.hpp"
 #include "run_program.hpp"
 
 namespace fs = std::filesystem;
