@@ -12,10 +12,12 @@
 #include "core/errors.hpp"
 #include "core/number_text.hpp"
 #include "discretisation/shape_functions.hpp"
+#include "engine/carried_state.hpp"
 #include "engine/schemes.hpp"
 #include "engine/energy_balance.hpp"
 #include "engine/simulation.hpp"
 #include "engine/stable_time_step.hpp"
+#include "io/checkpoint_file.hpp"
 #include "io/results_h5.hpp"
 #include "io/timeseries_csv.hpp"
 #include "io/xdmf.hpp"
@@ -48,8 +50,10 @@ std::string time_step_limits(const TimeStepLimit& limits) {
 
 // The run's logger: with `console`, the program's console output at the
 // level the default logger has (through a sink of its own that filters at
-// that level), and with `file`, every info line in that file (run.log).
-std::shared_ptr<spdlog::logger> run_logger(const std::optional<std::filesystem::path>& file, bool console) {
+// that level), and with `file`, every info line in that file (run.log),
+// which a restart appends to and a fresh run `truncate`s.
+std::shared_ptr<spdlog::logger> run_logger(const std::optional<std::filesystem::path>& file, bool console,
+                                           bool truncate) {
   const auto& program = spdlog::default_logger();
   std::vector<spdlog::sink_ptr> sinks;
   if (console) {
@@ -58,7 +62,7 @@ std::shared_ptr<spdlog::logger> run_logger(const std::optional<std::filesystem::
   }
   if (file) {
     try {
-      sinks.push_back(std::make_shared<spdlog::sinks::basic_file_sink_mt>(file->string(), true));
+      sinks.push_back(std::make_shared<spdlog::sinks::basic_file_sink_mt>(file->string(), truncate));
     } catch (const spdlog::spdlog_ex& e) {
       throw std::runtime_error("cannot write " + file->string() + ": " + e.what());
     }
@@ -124,26 +128,57 @@ void log_system(spdlog::logger& log, const Case& c, const Simulation<D, Shape>& 
   if (limits.diffusion) log.info("time-step limits: {}", time_step_limits(limits));
 }
 
+// "name" from FILE --set KEY=VALUE ..., for messages about a checkpoint's case.
+std::string case_text(const std::string& name, const std::string& file, const std::string& overrides) {
+  return "'" + name + "' from " + file + overrides;
+}
+std::string overrides_text(const Case& c) {
+  std::string text;
+  for (const std::string& o : c.overrides) text += " --set " + o;
+  return text;
+}
+
+// The command that continues a run from its checkpoint.
+std::string restart_command(const Case& c) {
+  return "flowmpm run " + c.file.string() + overrides_text(c) + " --restart " + c.output.directory.string();
+}
+
+// The checkpoint in the case's output directory, if it is one of this case;
+// throws CaseError naming the file and why not.
+StateRecords checkpoint_of(const Case& c) {
+  const auto path = c.output.directory / checkpoint_file_name;
+  if (!std::filesystem::is_regular_file(path)) {
+    throw CaseError(c.output.directory.string() + ": no checkpoint to restart from (no " + checkpoint_file_name +
+                    " there; a run writes one every output.checkpoint_every steps and when it is interrupted)");
+  }
+  StateRecords records = read_checkpoint(path);
+  std::string digest, name, file, overrides;
+  try {
+    const StateReader read(records);
+    read("case.digest", digest);
+    read("case.name", name);
+    read("case.file", file);
+    read("case.overrides", overrides);
+  } catch (const std::runtime_error& e) {
+    throw CaseError(path.string() + ": not a checkpoint of a flowmpm run (" + e.what() + ")");
+  }
+  if (digest != c.digest) {
+    throw CaseError(path.string() + ": a checkpoint of another case: it was written for " +
+                    case_text(name, file, overrides) + " (digest " + digest + "), this is " +
+                    case_text(c.name, c.file.string(), overrides_text(c)) + " (digest " + c.digest +
+                    "); restart with the case file and --set options it was written for, or run without --restart");
+  }
+  return records;
+}
+
 template <int D, class Shape>
-RunSummary run(const Case& c, const RunOptions& options) {
+RunSummary run(const Case& c, const RunOptions& options, const std::string& fresh_because = {}) {
   const auto setup_start = Clock::now();
   const Scheme& scheme = scheme_named(c.scheme);
   Simulation<D, Shape> sim(c.system, scheme.wiring, c.dt_auto ? 0.0 : c.dt);
   auto& system = sim.system();
   const auto& dir = c.output.directory;
-  if (options.write_results) {
-    std::error_code error;
-    std::filesystem::create_directories(dir, error);
-    if (error) {
-      throw CaseError("output directory " + dir.string() + ": cannot create it (" + error.message() +
-                      "); set output.directory or --output");
-    }
-  }
-  const auto log = run_logger(options.write_results ? std::optional(dir / "run.log") : std::nullopt,
-                              options.log_to_console);
-  log->info("case '{}' from {}, {} thread{}, output in {}", c.name, c.file.string(), options.threads,
-            options.threads == 1 ? "" : "s", options.write_results ? dir.string() : "(none)");
-  log_system(*log, c, sim, scheme);
+  const auto checkpoint_path = dir / checkpoint_file_name;
 
   RunSummary summary;
   summary.case_name = c.name;
@@ -157,7 +192,6 @@ RunSummary run(const Case& c, const RunOptions& options) {
   summary.nodes = system.grid.node_count();
   summary.dt = c.dt_auto ? 0.0 : c.dt;
   summary.end_time = c.end_time;
-  summary.setup_seconds = options.setup_seconds + seconds_since(setup_start);
 
   // Without output.every: about 20 output steps over the run.
   const std::int64_t planned_steps =
@@ -165,41 +199,154 @@ RunSummary run(const Case& c, const RunOptions& options) {
   const std::int64_t every = c.output.every > 0 ? c.output.every : std::max<std::int64_t>(1, planned_steps / 20);
   std::optional<Reference> reference = c.reference;
   std::int64_t sample_every = 1;
+  if (reference) {
+    reference->initialise(system);
+    if (reference->samples() > 0) sample_every = std::max<std::int64_t>(1, planned_steps / reference->samples());
+  }
+  const std::size_t body_count = c.system.bodies.size();
+  std::vector<std::string> body_names;
+  for (const auto& b : c.system.bodies) body_names.push_back(b.name);
+  const std::vector<std::string> reactions = reaction_names(sim.diagnostics(body_count));
+  std::vector<std::string> error_names;
+  if (reference)
+    for (const auto& [name, value] : reference->errors()) error_names.push_back(name);
+
+  // The energy balance (engine/energy_balance.hpp): its change since the
+  // start at each recorded step, and the largest energy present so far.
+  const Diagnostics initial = sim.diagnostics(body_count);
+  double balance_at_start = initial.energy_balance();
+  double energy_scale = 0.0, worst_balance_error = 0.0;
+  // The guard's energy budget, with a floor for bodies at rest.
+  const StableStep stable = stable_time_step(c.system, scheme);
+  const double c_max = system.grid.h.minCoeff() / stable.crossing;  // fastest wave speed
+  double total_mass = 0.0;
+  for (const auto& b : system.batches)
+    for (const double m : b.mass) total_mass += m;
+  EnergyBudget budget(initial.kinetic_energy + initial.stored_energy + initial.dissipated_energy,
+                      0.5 * total_mass * (1e-6 * c_max) * (1e-6 * c_max), c.guard_energy_factor);
+
+  // What the time loop carries from step to step besides the system: the
+  // output steps written (results.h5 groups and timeseries.csv rows; the
+  // step of the last), the reference's sums, the blow-up guard's last good
+  // state and energy budget, the energy balance at the start and its worst
+  // error so far, and the time spent so far.
+  std::int64_t output_steps = 0, last_written = -1;
+  ParticleSnapshot last_good;
+  auto visit_loop_state = [&](auto&& f) {
+    f("run.output_steps", output_steps);
+    f("run.last_written", last_written);
+    f("energy.balance_at_start", balance_at_start);
+    f("energy.scale", energy_scale);
+    f("energy.worst_balance_error", worst_balance_error);
+    budget.visit_state(f);
+    f("run.step_loop_seconds", summary.step_loop_seconds);
+    f("run.output_seconds", summary.output_seconds);
+    f("run.reference_seconds", summary.reference_seconds);
+    if (reference) reference->visit_state([&](const std::string& name, auto& value) { f("reference." + name, value); });
+    // At a step the guard keeps anyway (a multiple of guard_every), the
+    // loop keeps it again before the next step: nothing to save.
+    const bool kept_next = c.guard_every > 0 && system.step % c.guard_every == 0;
+    std::size_t guard_rows = kept_next ? 0 : last_good.count;
+    f("guard.count", guard_rows);
+    if (guard_rows > 0) {
+      if (last_good.count == 0) sim.snapshot_into(last_good, c.output.fields);  // restoring: the fields' layout
+      f("guard.step", last_good.step);
+      f("guard.time", last_good.time);
+      for (SnapshotField& field : last_good.fields) {
+        f("guard." + std::string(field.field.name), field.real);
+        f("guard." + std::string(field.field.name) + ".integer", field.integer);
+      }
+    }
+  };
+  auto output_continuation = [&] {
+    ResultsH5::Continuation h5_from{static_cast<std::size_t>(output_steps), last_written, {}};
+    for (const SnapshotField& f : sim.snapshot(c.output.fields).fields) h5_from.fields.push_back(f.field);
+    return std::pair(h5_from, TimeseriesCsv::Continuation{static_cast<std::size_t>(output_steps), last_written});
+  };
+
+  // A restart: the checkpoint restored and the output files checked before
+  // anything is written. A case that may restart (a sweep's) starts afresh
+  // when its checkpoint does not fit.
+  const bool restart = options.write_results && (options.restart == Restart::from_checkpoint ||
+                                                 (options.restart == Restart::if_checkpoint &&
+                                                  std::filesystem::exists(checkpoint_path)));
+  if (restart) {
+    try {
+      const StateRecords records = checkpoint_of(c);
+      try {
+        restore_carried_state(records, system);
+        visit_loop_state(StateReader(records));
+      } catch (const std::runtime_error& e) {
+        throw CaseError(checkpoint_path.string() + ": does not fit this case: " + e.what());
+      }
+      const auto [h5_from, csv_from] = output_continuation();
+      try {
+        ResultsH5::check_continuation(dir / "results.h5", h5_from);
+        TimeseriesCsv::kept_text(dir / "timeseries.csv", body_names, reactions, error_names, csv_from);
+      } catch (const std::runtime_error& e) {
+        throw CaseError(e.what());
+      }
+    } catch (const CaseError& e) {
+      if (options.restart == Restart::from_checkpoint) throw;
+      RunOptions fresh = options;
+      fresh.restart = Restart::no;
+      return run<D, Shape>(c, fresh, e.what());
+    }
+  }
+
+  if (options.write_results) {
+    std::error_code error;
+    std::filesystem::create_directories(dir, error);
+    if (error) {
+      throw CaseError("output directory " + dir.string() + ": cannot create it (" + error.message() +
+                      "); set output.directory or --output");
+    }
+  }
+  const auto log = run_logger(options.write_results ? std::optional(dir / "run.log") : std::nullopt,
+                              options.log_to_console, !restart);
+  log->info("case '{}' from {}, {} thread{}, output in {}", c.name, c.file.string(), options.threads,
+            options.threads == 1 ? "" : "s", options.write_results ? dir.string() : "(none)");
+  log_system(*log, c, sim, scheme);
+  if (restart) {
+    log->info("restart from the checkpoint at step {} (t = {:.6g} s), {}; results.h5, results.xdmf and "
+              "timeseries.csv continue after its output step {}",
+              system.step, system.t, checkpoint_path.string(), last_written);
+  } else if (options.write_results && std::filesystem::exists(checkpoint_path)) {
+    log->warn("{}: a checkpoint of an earlier run in the output directory{}; this run starts afresh and replaces it",
+              checkpoint_path.string(), fresh_because.empty() ? "" : " (" + fresh_because + ")");
+    std::filesystem::remove(checkpoint_path);
+  }
+  summary.setup_seconds = options.setup_seconds + seconds_since(setup_start);
+
   auto sample_reference = [&] {
     const auto t0 = Clock::now();
     reference->sample(system);
     summary.reference_seconds += seconds_since(t0);
   };
   if (reference) {
-    reference->initialise(system);
-    if (reference->samples() > 0) sample_every = std::max<std::int64_t>(1, planned_steps / reference->samples());
-    sample_reference();
+    if (!restart) sample_reference();
     log->info("reference: {} (errors sampled every {} step{})", reference->type(), sample_every,
                  sample_every == 1 ? "" : "s");
   }
 
-  const std::size_t body_count = c.system.bodies.size();
-  std::vector<std::string> body_names;
-  for (const auto& b : c.system.bodies) body_names.push_back(b.name);
   std::optional<ResultsH5> h5;
   std::optional<XdmfIndex> xdmf;
   std::optional<TimeseriesCsv> csv;
   if (options.write_results) {
-    ResultsMetadata metadata{FLOWMPM_VERSION, FLOWMPM_COMMIT, c.name, c.file.string(), D,
-                             stress_state_name(system.stress_state), scheme.label, Shape::name, {}};
-    for (const NamedMaterial& m : c.system.materials) metadata.materials.push_back(m.name);
-    h5.emplace(dir / "results.h5", metadata);
+    if (restart) {
+      const auto [h5_from, csv_from] = output_continuation();
+      h5.emplace(dir / "results.h5", h5_from);
+      csv.emplace(dir / "timeseries.csv", body_names, reactions, error_names, csv_from);
+    } else {
+      ResultsMetadata metadata{FLOWMPM_VERSION, FLOWMPM_COMMIT, c.name, c.file.string(), D,
+                               stress_state_name(system.stress_state), scheme.label, Shape::name, {}};
+      for (const NamedMaterial& m : c.system.materials) metadata.materials.push_back(m.name);
+      h5.emplace(dir / "results.h5", metadata);
+      csv.emplace(dir / "timeseries.csv", body_names, reactions, error_names);
+    }
     xdmf.emplace(dir / "results.xdmf", "results.h5");
-    std::vector<std::string> error_names;
-    if (reference)
-      for (const auto& [name, value] : reference->errors()) error_names.push_back(name);
-    csv.emplace(dir / "timeseries.csv", body_names, reaction_names(sim.diagnostics(body_count)), error_names);
+    if (restart) xdmf->finish(*h5);  // without the steps written after the checkpoint
   }
-  // The energy balance (engine/energy_balance.hpp): its change since the
-  // start at each recorded step, and the largest energy present so far.
-  const Diagnostics initial = sim.diagnostics(body_count);
-  const double balance_at_start = initial.energy_balance();
-  double energy_scale = 0.0, worst_balance_error = 0.0;
   auto balance_error = [&](const Diagnostics& d) {
     const double error = d.energy_balance() - balance_at_start;
     energy_scale = std::max({energy_scale, d.kinetic_energy + d.stored_energy + d.dissipated_energy,
@@ -220,6 +367,20 @@ RunSummary run(const Case& c, const RunOptions& options) {
         for (const auto& [name, value] : reference->errors()) errors.push_back(value);
       csv->write(row, error, errors);
     }
+    ++output_steps;
+    summary.output_seconds += seconds_since(t0);
+  };
+  auto write_checkpoint_now = [&] {
+    const auto t0 = Clock::now();
+    StateRecords records;
+    StateWriter write(records);
+    write("case.digest", c.digest);
+    write("case.name", c.name);
+    write("case.file", c.file.string());
+    write("case.overrides", overrides_text(c));
+    save_carried_state(system, records);
+    visit_loop_state(write);
+    write_checkpoint(checkpoint_path, records);
     summary.output_seconds += seconds_since(t0);
   };
   auto finish = [&](const std::string& status) {
@@ -253,16 +414,7 @@ RunSummary run(const Case& c, const RunOptions& options) {
 
   // Blow-up guard: the state is kept every guard_every steps so that the
   // last one that passed can be written when the run breaks down.
-  ParticleSnapshot last_good;
-  std::int64_t last_written = -1;
-  const StableStep stable = stable_time_step(c.system, scheme);
-  const double c_max = system.grid.h.minCoeff() / stable.crossing;  // fastest wave speed
   const double speed_limit = c.guard_speed_factor * c_max;
-  double total_mass = 0.0;
-  for (const auto& b : system.batches)
-    for (const double m : b.mass) total_mass += m;
-  EnergyBudget budget(initial.kinetic_energy + initial.stored_energy + initial.dissipated_energy,
-                      0.5 * total_mass * (1e-6 * c_max) * (1e-6 * c_max), c.guard_energy_factor);
   auto check_guard = [&] {
     const double limit = budget.limit(system.work);
     if (system.kinetic_energy > limit) {
@@ -304,19 +456,26 @@ RunSummary run(const Case& c, const RunOptions& options) {
     if (diffusion) dt = std::min(dt, diffusion_dt);
     return std::min(dt, c.end_time - system.t);
   };
-  sim.measure_speed();
-
-  write_output();
-  last_written = system.step;
+  if (!restart) {
+    sim.measure_speed();
+    write_output();
+    last_written = system.step;
+  }
   auto last_progress = Clock::now();
   const auto loop_start = Clock::now();
+  const double loop_start_time = system.t;
   try {
     while (!done()) {
       if (options.interrupt && options.interrupt->load()) {
+        std::string checkpoint;
+        if (options.write_results) {
+          write_checkpoint_now();
+          checkpoint = "; continue it with " + restart_command(c);
+        }
         if (system.step != last_written) write_output();
         finish("interrupted at step " + std::to_string(system.step));
         throw SimulationError("interrupted at step " + std::to_string(system.step) + " (t = " +
-                              std::to_string(system.t) + " s); results up to this step are written");
+                              std::to_string(system.t) + " s); results up to this step are written" + checkpoint);
       }
       if (c.guard_every > 0 && system.step % c.guard_every == 0) sim.snapshot_into(last_good, c.output.fields);
       system.dt = next_dt();
@@ -337,12 +496,17 @@ RunSummary run(const Case& c, const RunOptions& options) {
         write_output();
         last_written = system.step;
       }
+      if (options.write_results && c.output.checkpoint_every > 0 && system.step % c.output.checkpoint_every == 0 &&
+          !last) {
+        write_checkpoint_now();
+      }
       if (seconds_since(last_progress) >= options.progress_seconds) {
         last_progress = Clock::now();
         const double rate = static_cast<double>(summary.particles) * static_cast<double>(system.step) /
                             summary.step_loop_seconds;
         const double fraction = system.t / c.end_time;
-        const double eta = seconds_since(loop_start) * (1.0 - fraction) / fraction;
+        // The ETA from this session's pace (a restart begins part way).
+        const double eta = seconds_since(loop_start) * (c.end_time - system.t) / (system.t - loop_start_time);
         log->info("step {} ({:.0f}%), t = {:.6g} s, dt = {:.3g} s, {:.3g} particle-steps/s, ETA {:.0f} s",
                      system.step, 100.0 * fraction, system.t, system.dt, rate, eta);
       }
@@ -359,9 +523,9 @@ RunSummary run(const Case& c, const RunOptions& options) {
   }
   finish("completed");
   log->info("done: {} steps, {} particles, {:.3f} s in the step loop, {:.4g} particle-steps/s (set-up {:.3f} s, "
-            "output {:.3f} s)",
+            "output {:.3f} s), particles sorted {} times",
             summary.steps, summary.particles, summary.step_loop_seconds, summary.particle_steps_per_second,
-            summary.setup_seconds, summary.output_seconds);
+            summary.setup_seconds, summary.output_seconds, system.sorts);
   for (const auto& b : summary.bodies) {
     log->info("body '{}' at t = {:.6g} s: mean stress xx {:.6g} yy {:.6g} zz {:.6g} Pa, mean strain xx {:.6g} "
               "yy {:.6g} zz {:.6g}",

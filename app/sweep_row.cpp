@@ -104,6 +104,10 @@ std::optional<SweepRow> run_sweep_case(const Sweep& sweep, std::size_t i, tbb::t
   options.threads = threads;
   options.log_to_console = false;  // the case logs to its run.log
   options.interrupt = interrupt;
+  // A case stopped part way (interrupted, or its process killed) has no row:
+  // it continues from its checkpoint if it has one. A failed case runs again
+  // from the start.
+  options.restart = read_sweep_row(sweep, i) ? Restart::no : Restart::if_checkpoint;
   SweepRow row;
   row.rank = rank;
   try {

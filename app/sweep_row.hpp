@@ -50,7 +50,8 @@ std::optional<SweepRow> parse_sweep_row(std::string_view text, const Sweep& swee
 std::optional<SweepRow> read_sweep_row(const Sweep& sweep, std::size_t i);
 
 // Runs case i in `arena` on `threads` threads, in its folder, and writes its
-// sweep_row.txt. A failure of the run is the row's (completed = false, with
+// sweep_row.txt. A case without a row that has a checkpoint of its own in
+// its folder (it was interrupted) continues from it. A failure of the run is the row's (completed = false, with
 // the message), not the sweep's. A run stopped by `interrupt` returns
 // nullopt and writes no row: the case is left to run again.
 std::optional<SweepRow> run_sweep_case(const Sweep& sweep, std::size_t i, tbb::task_arena& arena, int threads,

@@ -29,7 +29,7 @@ std::atomic<bool> interrupted{false};
 void on_signal(int) { interrupted = true; }
 
 struct Arguments {
-  std::string command, case_file, output;
+  std::string command, case_file, output, restart;
   int threads = 0;  // 0: all cores
   int jobs = 1;
   bool quiet = false;
@@ -95,7 +95,12 @@ Arguments parse(int argc, char** argv) {
       "run", "run a case; writes results.h5, results.xdmf (open in ParaView), timeseries.csv and summary.json");
   run->add_option("case", a.case_file, "the case file (TOML)")->type_name("CASE.toml");
   threads(run);
-  run->add_option("--output", a.output, "output directory (overrides output.directory)");
+  CLI::Option* output = run->add_option("--output", a.output, "output directory (overrides output.directory)");
+  run->add_option("--restart", a.restart,
+                  "continue the run whose output directory is DIR from its checkpoint (with the same case file and "
+                  "--set options); its results files are continued")
+      ->type_name("DIR")
+      ->excludes(output);
   overrides(run);
   quiet(run);
 
@@ -222,7 +227,8 @@ int main(int argc, char** argv) {
                                         : static_cast<int>(tbb::info::default_concurrency());
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
 
-  // Ctrl-C or a termination request: finish the current step, keep results.
+  // Ctrl-C or a termination request: finish the current step, keep results
+  // and write a checkpoint.
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
   if (args.command == "sweep") return sweep(args, threads, argc, argv);
@@ -235,6 +241,7 @@ int main(int argc, char** argv) {
     }
     c = flowmpm::read_case(args.case_file, args.overrides);
     if (!args.output.empty()) c.output.directory = args.output;
+    if (!args.restart.empty()) c.output.directory = args.restart;
     if (args.command == "check") {
       flowmpm::describe_case(c);
       std::cout << args.case_file << ": ok\n";
@@ -248,6 +255,7 @@ int main(int argc, char** argv) {
   flowmpm::RunOptions options;
   options.threads = threads;
   options.interrupt = &interrupted;
+  if (!args.restart.empty()) options.restart = flowmpm::Restart::from_checkpoint;
   options.setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - read_start).count();
   try {
     flowmpm::run_case(c, options);

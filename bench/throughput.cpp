@@ -131,7 +131,9 @@ std::pair<double, double> output_cost(SystemSpec c) {
   std::filesystem::create_directories(dir);
   const auto start = Clock::now();
   {
-    ResultsH5 h5(dir / "results.h5", ResultsMetadata{});
+    ResultsMetadata metadata;
+    for (const NamedMaterial& m : c.materials) metadata.materials.push_back(m.name);  // an empty list cannot be written
+    ResultsH5 h5(dir / "results.h5", metadata);
     h5.write(sim.snapshot(default_output_fields()));
   }
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();

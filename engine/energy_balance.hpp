@@ -51,6 +51,12 @@ class EnergyBudget {
     return factor_ * (largest_ + floor_);
   }
   double factor() const { return factor_; }
+  // Calls f(name, value) for what a checkpoint carries (engine/carried_state.hpp).
+  template <class F>
+  void visit_state(F&& f) {
+    f("energy.budget_initial", initial_);
+    f("energy.budget_largest", largest_);
+  }
 
  private:
   double initial_;  // kinetic + stored + dissipated at the start (J)

@@ -15,6 +15,7 @@
 #include "engine/stable_time_step.hpp"
 #include "engine/take_snapshot.hpp"
 #include "io/case_reader.hpp"
+#include "io/digest.hpp"
 
 namespace flowmpm {
 namespace {
@@ -395,6 +396,9 @@ void read_output(TableReader t, Case& c) {
   c.output.directory = t.string_or("directory", "results/" + c.name);
   c.output.every = t.integer_or("every", 0);
   t.require(c.output.every >= 0, "every", "a number of steps >= 0 (0: about 20 over the run)");
+  c.output.checkpoint_every = t.integer_or("checkpoint_every", 0);
+  t.require(c.output.checkpoint_every >= 0, "checkpoint_every",
+            "a number of steps >= 0 between checkpoints (0: a checkpoint only when interrupted)");
   if (t.has("fields")) {
     const std::vector<std::string> known = offered_fields(c.system);
     c.output.fields = t.strings("fields");
@@ -436,6 +440,15 @@ Case read_case(const std::filesystem::path& file, const std::vector<std::string>
 
   Case c;
   c.file = file;
+  c.overrides = overrides;
+  {
+    std::ifstream in(file, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    std::uint64_t h = fnv1a(text.str());
+    for (const std::string& assignment : overrides) h = fnv1a("\n--set " + assignment, h);
+    c.digest = hex_digest(h);
+  }
   TableReader t(root, "", file.string(), sources);
   c.system.source = file.string();
   c.name = t.string_or("name", file.stem().string());

@@ -17,11 +17,16 @@ struct OutputSpec {
   std::filesystem::path directory;
   std::int64_t every = 0;           // steps between output steps (0: about 20 over the run)
   std::vector<std::string> fields;  // names of output fields to write (engine/snapshot.hpp)
+  std::int64_t checkpoint_every = 0;  // steps between checkpoints (0: only when interrupted)
 };
 
 struct Case {
   std::string name;
   std::filesystem::path file;
+  std::vector<std::string> overrides;  // the --set KEY=VALUE it was read with
+  // Of the file's text and the overrides (io/digest.hpp): a checkpoint
+  // continues only the case that wrote it.
+  std::string digest;
   SystemSpec system;                      // what the discrete system is built from
   std::string scheme = "usl";             // a name of scheme_names()
   std::string velocity_update = "flip";   // "flip", "pic" or "blend" (system.flip_fraction)

@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <cinttypes>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <stdexcept>
 #include <utility>
 
@@ -112,7 +114,118 @@ std::uintmax_t write_field(hid_t group, const std::string& group_name, std::size
   return static_cast<std::uintmax_t>(field.size) * field.value_bytes;
 }
 
+// Reads a numeric attribute into `value`; false when it is absent or unreadable.
+template <typename T>
+bool read_attribute(hid_t object, const char* name, hid_t memory_type, T& value) {
+  if (H5Aexists(object, name) <= 0) return false;
+  Handle attribute(H5Aopen(object, name, H5P_DEFAULT), H5Aclose);
+  return attribute.valid() && H5Aread(attribute.get(), memory_type, &value) >= 0;
+}
+
+herr_t collect_link_name(hid_t, const char* name, const H5L_info_t*, void* names) {
+  static_cast<std::vector<std::string>*>(names)->push_back(name);
+  return 0;
+}
+
+// The names of the links in `group`, in name order.
+std::vector<std::string> link_names(hid_t group) {
+  std::vector<std::string> names;
+  hsize_t index = 0;
+  if (H5Literate(group, H5_INDEX_NAME, H5_ITER_INC, &index, collect_link_name, &names) < 0) names.clear();
+  return names;
+}
+
+// A step group as found in a file.
+struct StoredStep {
+  std::string name;  // "/steps/00000010"
+  std::int64_t step = -1;
+  double time = 0.0;
+  bool complete = false;
+  std::size_t count = 0;  // rows of its position dataset
+  std::vector<std::string> datasets;
+};
+
+// The step groups of an open file, in step order (their names are the steps, zero-padded).
+std::vector<StoredStep> stored_steps(hid_t file, const std::string& path) {
+  Handle steps(H5Gopen2(file, "/steps", H5P_DEFAULT), H5Gclose);
+  if (!steps.valid()) fail(path, "has no group /steps");
+  std::vector<StoredStep> stored;
+  for (const std::string& name : link_names(steps.get())) {
+    StoredStep s;
+    s.name = "/steps/" + name;
+    Handle group(H5Gopen2(steps.get(), name.c_str(), H5P_DEFAULT), H5Gclose);
+    if (group.valid()) {
+      int complete = 0;
+      s.complete = read_attribute(group.get(), "complete", H5T_NATIVE_INT, complete) && complete == 1 &&
+                   read_attribute(group.get(), "step", H5T_NATIVE_INT64, s.step) &&
+                   read_attribute(group.get(), "time", H5T_NATIVE_DOUBLE, s.time);
+      s.datasets = link_names(group.get());
+      Handle position(H5Dopen2(group.get(), "position", H5P_DEFAULT), H5Dclose);
+      Handle space(position.valid() ? H5Dget_space(position.get()) : H5I_INVALID_HID, H5Sclose);
+      hsize_t dims[2] = {0, 0};
+      if (space.valid() && H5Sget_simple_extent_dims(space.get(), dims, nullptr) >= 1) s.count = dims[0];
+    }
+    // A group cut off before its step attribute: its name tells the step.
+    if (s.step < 0) s.step = std::strtoll(name.c_str(), nullptr, 10);
+    stored.push_back(std::move(s));
+  }
+  return stored;
+}
+
+// The groups a continuation keeps, checked; throws naming what is missing.
+std::vector<StoredStep> kept_steps(const std::vector<StoredStep>& stored, const ResultsH5::Continuation& from,
+                                   const std::string& path) {
+  std::vector<StoredStep> kept;
+  for (const StoredStep& s : stored)
+    if (s.step <= from.last_step) kept.push_back(s);
+  const auto lacks = [&](const std::string& what) {
+    throw std::runtime_error("HDF5 file " + path + ": " + what + ", so the run cannot continue from the checkpoint");
+  };
+  if (kept.size() != from.keep || (from.keep > 0 && kept.back().step != from.last_step)) {
+    lacks("holds " + std::to_string(kept.size()) + " output steps up to step " + std::to_string(from.last_step) +
+          ", not the " + std::to_string(from.keep) + " the checkpoint was written after");
+  }
+  std::vector<std::string> expected;
+  for (const OutputField& f : from.fields) expected.emplace_back(f.name);
+  std::ranges::sort(expected);
+  for (const StoredStep& s : kept) {
+    if (!s.complete) lacks(s.name + " is incomplete");
+    if (s.datasets != expected) lacks(s.name + " has other fields than the case writes");
+  }
+  return kept;
+}
+
 }  // namespace
+
+void ResultsH5::check_continuation(const std::filesystem::path& path, const Continuation& from) {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  const std::string name = path.string();
+  if (!std::filesystem::is_regular_file(path)) {
+    throw std::runtime_error("HDF5 file " + name + ": not found, so the run cannot continue from the checkpoint");
+  }
+  Handle file(H5Fopen(name.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+  if (!file.valid()) fail(name, "cannot open it to continue it");
+  kept_steps(stored_steps(file.get(), name), from, name);
+}
+
+ResultsH5::ResultsH5(const std::filesystem::path& path, const Continuation& from)
+    : file_(H5I_INVALID_HID), path_(path.string()) {
+  check_continuation(path, from);
+  Handle file(H5Fopen(path_.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), H5Fclose);
+  if (!file.valid()) fail(path_, "cannot open it to continue it");
+  const std::vector<StoredStep> stored = stored_steps(file.get(), path_);
+  for (const StoredStep& s : kept_steps(stored, from, path_)) written_.push_back({s.step, s.time, s.count});
+  for (const StoredStep& s : stored) {
+    if (s.step > from.last_step && H5Ldelete(file.get(), s.name.c_str(), H5P_DEFAULT) < 0)
+      fail(path_, "cannot remove " + s.name + ", written after the checkpoint");
+  }
+  if (H5Fflush(file.get(), H5F_SCOPE_GLOBAL) < 0) fail(path_, "cannot flush");
+  if (!written_.empty()) {
+    fields_ = from.fields;
+    index_length_ = written_.front().count;
+  }
+  file_ = file.release();
+}
 
 ResultsH5::ResultsH5(const std::filesystem::path& path, const ResultsMetadata& m)
     : file_(H5I_INVALID_HID), path_(path.string()) {

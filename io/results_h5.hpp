@@ -36,6 +36,21 @@ class ResultsH5 {
   // Creates (truncates) the file and writes the metadata; throws
   // std::runtime_error naming the path.
   ResultsH5(const std::filesystem::path& path, const ResultsMetadata& metadata);
+  // Where a run restarted from a checkpoint takes up an existing file: its
+  // step groups up to `last_step`, `keep` of them, all complete, with the
+  // fields `fields`. Groups after `last_step` were written after the
+  // checkpoint and are removed.
+  struct Continuation {
+    std::size_t keep = 0;
+    std::int64_t last_step = 0;
+    std::vector<OutputField> fields;
+  };
+  // Throws std::runtime_error naming the file and what it lacks when the
+  // file cannot be continued so; reads only.
+  static void check_continuation(const std::filesystem::path& path, const Continuation& from);
+  // Opens the file to continue it (check_continuation first), removes the
+  // groups after `last_step` and appends after them.
+  ResultsH5(const std::filesystem::path& path, const Continuation& from);
   ~ResultsH5();
   ResultsH5(const ResultsH5&) = delete;
   ResultsH5& operator=(const ResultsH5&) = delete;

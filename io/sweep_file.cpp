@@ -4,13 +4,13 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <fstream>
 #include <map>
 #include <sstream>
 #include <utility>
 
 #include "io/case_reader.hpp"
+#include "io/digest.hpp"
 #include "io/quoted_string.hpp"
 
 namespace flowmpm {
@@ -95,14 +95,12 @@ std::string joined(const std::vector<std::string>& parts, std::string_view separ
   return out;
 }
 
-// FNV-1a, 64 bits, in hex: enough to tell two versions of a file apart.
+// The digest of the file's text (io/digest.hpp).
 std::string digest_of_file(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
-  std::uint64_t h = 14695981039346656037ull;
-  for (char c; in.get(c);) h = (h ^ static_cast<unsigned char>(c)) * 1099511628211ull;
-  char hex[17];
-  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
-  return hex;
+  std::ostringstream text;
+  text << in.rdbuf();
+  return hex_digest(fnv1a(text.str()));
 }
 
 toml::table parse_sweep_file(const std::filesystem::path& file) {

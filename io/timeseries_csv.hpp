@@ -8,6 +8,7 @@
 // Each row is flushed as it is written, so the file is never cut mid-row.
 #pragma once
 #include <filesystem>
+#include <cstdint>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -27,6 +28,23 @@ class TimeseriesCsv {
   // Diagnostics::reactions (reaction_names()).
   TimeseriesCsv(const std::filesystem::path& path, const std::vector<std::string>& body_names,
                 const std::vector<std::string>& reactions = {}, const std::vector<std::string>& error_names = {});
+  // Where a run restarted from a checkpoint takes up an existing file: its
+  // rows up to step `last_step`, `keep` of them, under the header these
+  // columns give. Rows after `last_step` were written after the checkpoint
+  // and are dropped.
+  struct Continuation {
+    std::size_t keep = 0;
+    std::int64_t last_step = 0;
+  };
+  // The header and the rows kept; throws std::runtime_error naming the file
+  // and what it lacks when it cannot be continued so. Reads only.
+  static std::string kept_text(const std::filesystem::path& path, const std::vector<std::string>& body_names,
+                               const std::vector<std::string>& reactions, const std::vector<std::string>& error_names,
+                               const Continuation& from);
+  // Rewrites the file with kept_text(...) (atomically) and appends to it.
+  TimeseriesCsv(const std::filesystem::path& path, const std::vector<std::string>& body_names,
+                const std::vector<std::string>& reactions, const std::vector<std::string>& error_names,
+                const Continuation& from);
   // One row: the diagnostics of a step, the energy balance's error (J) and
   // the error norms so far, in the order of the error names.
   void write(const Diagnostics& row, double balance_error, const std::vector<double>& errors = {});

@@ -2,7 +2,8 @@
 // A model is a value type with
 //   static constexpr const char* type_name;          // the case file's `type`
 //   static Model read(ParameterTable&);              // parameters, validated
-//   struct State;                                    // internal variables per particle
+//   struct State;                                    // internal variables per particle, plain
+//                                                    // data: checkpoints store its bytes
 //   State initial_state(const ParticleInit&) const;
 //   template <StressState Kind>
 //   void update(State&, Voigt& sigma, Voigt& deps, const MaterialInput&) const;

@@ -67,6 +67,14 @@ struct AxialVibration {
     }
   }
 
+  // What the samples have summed so far (Reference::visit_state).
+  template <class F>
+  void visit_state(F&& f) {
+    f("displacement", displacement);
+    f("velocity", velocity);
+    f("stress", stress);
+  }
+
   std::map<std::string, double> errors() const {
     return {{"displacement", displacement.relative_to(v0 / omega)},
             {"velocity", velocity.relative_to(v0)},

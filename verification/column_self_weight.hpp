@@ -73,6 +73,12 @@ struct ColumnSelfWeight {
     }
   }
 
+  // What the samples have summed so far (Reference::visit_state).
+  template <class F>
+  void visit_state(F&& f) {
+    f("displacement", displacement);
+  }
+
   std::map<std::string, double> errors() const {
     return {{"displacement", displacement.relative_to(0.5 * static_scale * height * height)}};
   }

@@ -100,6 +100,16 @@ struct ElasticWave {
     last_stress = stress;
   }
 
+  // What the samples have found so far (Reference::visit_state).
+  template <class F>
+  void visit_state(F&& f) {
+    f("measured_arrival", measured_arrival);
+    f("last_t", last_t);
+    f("last_stress", last_stress);
+    f("plateau_sum", plateau_sum);
+    f("plateau_samples", plateau_samples);
+  }
+
   std::map<std::string, double> errors() const {
     return {{"travel_time", std::abs(measured_arrival - t_arrival) / t_arrival},
             {"amplitude", std::abs(plateau_sum / plateau_samples - amplitude) / std::abs(amplitude)}};

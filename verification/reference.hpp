@@ -1,8 +1,9 @@
 // The analytical solution a case is measured against, chosen by the `type`
 // of its [reference] table (README "Verification"). Each solution reads and
 // checks its own keys, may set initial conditions, is sampled during the
-// run, and reports named error norms for summary.json and sweeps. Adding
-// one is one new file and one line in the variant below.
+// run, reports named error norms for summary.json and sweeps, and lists
+// what its samples accumulate for checkpoints (visit_state). Adding one is
+// one new file and one line in the variant below.
 #pragma once
 #include <cstdint>
 #include <map>
@@ -49,6 +50,12 @@ class Reference {
   }
   std::map<std::string, double> errors() const {
     return std::visit([](const auto& s) { return s.errors(); }, solution_);
+  }
+  // Calls f(name, value) for what the samples have accumulated, which a
+  // checkpoint saves and a restart restores (engine/state_records.hpp).
+  template <class F>
+  void visit_state(F&& f) {
+    std::visit([&](auto& s) { s.visit_state(f); }, solution_);
   }
 
  private:

@@ -100,6 +100,12 @@ struct SlabTransport {
     return a;
   }
 
+  // What the samples have summed so far (Reference::visit_state).
+  template <class F>
+  void visit_state(F&& f) {
+    f("error", error);
+  }
+
   std::map<std::string, double> errors() const {
     return {{heat ? "temperature" : "concentration", error.relative_to(amplitude())}};
   }

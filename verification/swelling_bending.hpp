@@ -139,6 +139,14 @@ struct SwellingBending {
     beam.push_back(beam_curvature(system.t));
   }
 
+  // What the samples have summed so far and the curvatures sampled (Reference::visit_state).
+  template <class F>
+  void visit_state(F&& f) {
+    f("concentration", concentration);
+    f("measured", measured);
+    f("beam", beam);
+  }
+
   std::map<std::string, double> errors() const {
     double squares = 0.0, largest = 0.0;
     for (std::size_t k = 0; k < beam.size(); ++k) {

@@ -91,6 +91,14 @@ struct SwellingSlab {
     }
   }
 
+  // What the samples have summed so far (Reference::visit_state).
+  template <class F>
+  void visit_state(F&& f) {
+    f("concentration", concentration);
+    f("stress", stress);
+    f("strain", strain);
+  }
+
   std::map<std::string, double> errors() const {
     std::map<std::string, double> e = {
         {"concentration", concentration.relative_to(amplitude)},

@@ -98,6 +98,13 @@ struct ThermalStress {
     }
   }
 
+  // The last sample (Reference::visit_state).
+  template <class F>
+  void visit_state(F&& f) {
+    f("stress", stress);
+    f("temperature", temperature);
+  }
+
   std::map<std::string, double> errors() const {
     return {{"stress", stress.relative_to(E * alpha * temperature_scale())},
             {"temperature", temperature.relative_to(temperature_scale())}};

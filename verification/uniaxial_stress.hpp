@@ -43,6 +43,13 @@ struct UniaxialStress {
     t = system.t;
   }
 
+  // The last sample (Reference::visit_state).
+  template <class F>
+  void visit_state(F&& f) {
+    f("means", means);
+    f("t", t);
+  }
+
   std::map<std::string, double> errors() const {
     const int lateral = axis == 0 ? 1 : 0;
     const double eps_a = v0 * t / length, sigma_a = E * eps_a, eps_l = -nu * eps_a;
