@@ -52,6 +52,20 @@ void log_system(const Case& c, const DiscreteSystem<D, Shape>& system, const Sch
                  "xyz"[k.axis]);
   }
   if (system.gravity.norm() > 0.0) spdlog::info("gravity: {} m/s^2", system.gravity.norm());
+  for (const auto& load : system.loads.surface) spdlog::info("load: {}", load.description);
+  for (const auto& load : system.loads.nodal) spdlog::info("load: {}", load.description);
+  for (const auto& load : system.loads.body) spdlog::info("load: {}", load.description);
+  if (system.damping) {
+    spdlog::info("damping: local alpha {}, viscous c {} 1/s (at t = 0; README \"Damping\")", system.damping->local(0.0),
+                 system.damping->viscous(0.0));
+  }
+  for (const auto& body : c.system.bodies) {
+    if (body.initial_stress) {
+      spdlog::info("body '{}': initial stress {}", body.name, InitialStresses::name_of(*body.initial_stress));
+    } else if (body.particles && !body.particles->stress.empty()) {
+      spdlog::info("body '{}': initial stress per particle from {}", body.name, body.particles->source);
+    }
+  }
   const StableStep stable = stable_time_step(c.system);
   if (c.dt_auto) {
     spdlog::info("time: dt automatic, CFL {} (first step {:.4g} s; the stable limit at rest is {:.4g} s), to t = {} s",
@@ -148,7 +162,11 @@ RunSummary run(const Case& c, const RunOptions& options) {
       summary.bodies.push_back(
           {c.system.bodies[i].name, final_state.bodies[i].stress, final_state.bodies[i].strain});
     }
-    if (reference) summary.errors = reference->errors();
+    if (reference) {
+      summary.errors = reference->errors();
+      summary.measures = reference->measures();
+    }
+    if (system.damping) summary.damping_dissipated = system.damping_dissipated;
     summary.energy_final = final_state.kinetic_energy + final_state.strain_energy;
     if (options.write_results) write_summary(dir / "summary.json", summary);
   };

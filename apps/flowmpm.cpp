@@ -185,6 +185,10 @@ int main(int argc, char** argv) {
     for (const auto& [name, value] : s.errors) {
       spdlog::info("error against the {} reference: {} = {:.4g}", c.reference->type(), name, value);
     }
+    for (const auto& [name, value] : s.measures) {
+      spdlog::info("measured by the {} reference: {} = {:.6g}", c.reference->type(), name, value);
+    }
+    if (s.damping_dissipated) spdlog::info("energy dissipated by damping: {:.6g} J", *s.damping_dissipated);
   } catch (const flowmpm::CaseError& e) {
     spdlog::error("{}", e.what());
     return 1;

@@ -63,8 +63,7 @@ SystemSpec block_case(std::size_t target_particles, const std::string& shape) {
   c.materials.push_back({"elastic", LinearElastic(LinearElastic::Parameters{1000.0, 1e7, 0.3})});
   BodySpec body;
   body.name = "block";
-  body.box_min = {0.0, 0.0, 0.0};
-  body.box_max = {1.0, 1.0, 1.0};
+  body.shape = BodyShape{BoxShape{{0.0, 0.0, 0.0}, {1.0, 1.0, 1.0}}};
   body.spacing = {h / 2, h / 2, h / 2};
   c.bodies.push_back(body);
   NodeSetSpec base;

@@ -11,6 +11,7 @@
 
 #include "core/time_function.hpp"
 #include "discretisation/blocks.hpp"
+#include "discretisation/external_loads.hpp"
 #include "discretisation/grid.hpp"
 #include "discretisation/particles.hpp"
 #include "materials/material.hpp"
@@ -79,6 +80,15 @@ struct DiscreteSystem {
   std::vector<NodeConstraint> constraints;
   std::vector<MirrorPlane> mirror_planes;
   Vec<D> gravity = Vec<D>::Zero();
+  ExternalLoads<D> loads;          // tractions, pressures, nodal and body forces
+  std::optional<Damping> damping;  // quasi-static damping, if the case has it
+  // Power of the damping forces over the last step (W; per unit thickness
+  // in 2D, per unit cross-section in 1D): sum over the nodes of f_d . v,
+  // v the mean of the node's velocity before and after the update, so that
+  // it is exactly the damping's share of the grid's kinetic energy change
+  // (<= 0). damping_dissipated = -sum of damping_power dt over the steps (J).
+  double damping_power = 0.0;
+  double damping_dissipated = 0.0;
   double flip_fraction = 1.0;
   // Nodes lighter than this carry no velocity (v = p / m would be noise).
   double mass_threshold = 0.0;

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <limits>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,9 +39,16 @@ struct RunSummary {
     return energy_initial > 0.0 ? (energy_final - energy_initial) / energy_initial
                                 : std::numeric_limits<double>::quiet_NaN();
   }
+  // With damping: the energy it removed (J, >= 0; per unit thickness in 2D),
+  // which the kinetic plus strain energy lacks against the work done on
+  // the body (README "Damping").
+  std::optional<double> damping_dissipated;
   std::vector<BodySummary> bodies;
   // Error norms against a reference solution, by name (empty without one).
   std::map<std::string, double> errors;
+  // What a reference measures without a closed form to compare with
+  // (README "Verification"), by name; empty without one.
+  std::map<std::string, double> measures;
 };
 
 // The JSON text (pretty-printed, numbers with 17 significant digits,

@@ -1,9 +1,15 @@
 // Grid stages (README "How a step runs"). grid_velocity: v_I = p_I / m_I where m_I is above
 // the mass threshold, then the prescribed velocities (p_I follows).
-// grid_integrate: p_I += f_I dt, v_I^new = p_I / m_I, prescribed velocities
-// at t + dt, and dv_I = v_I^new - v_I for the FLIP update; v_I becomes
-// v_I^new so that the stages after it read the updated velocity.
+// grid_integrate: the external forces added (tasks/external_forces.hpp),
+// p_I += (f_I + f_d) dt with f_d the damping force if the scene has damping,
+// v_I^new = p_I / m_I, prescribed velocities at t + dt, and
+// dv_I = v_I^new - v_I for the FLIP update; v_I becomes v_I^new so that the
+// stages after it read the updated velocity.
 #pragma once
+#include <cmath>
+#include <vector>
+
+#include "tasks/external_forces.hpp"
 #include "tasks/parallel_blocks.hpp"
 
 namespace flowmpm {
@@ -57,23 +63,68 @@ void grid_velocity(DiscreteSystem<D, Shape>& system) {
   apply_velocity_constraints(system, system.t);
 }
 
+// p_I += (f_I + f_d) dt with the damping force (Damping), along each axis
+// the node is free along:
+//   f_d = -alpha |f_I| sign(v_I) - c m_I v_I,
+// v_I the velocity before the update. Its power f_d (v_I + v_I^new) / 2 is
+// summed per slab of nodes and then over the slabs in order, so the sum
+// does not depend on the thread count.
+template <int D, class Shape>
+void integrate_damped(DiscreteSystem<D, Shape>& system) {
+  auto& grid = system.grid;
+  const Damping& damping = *system.damping;
+  const double threshold = system.mass_threshold, dt = system.dt;
+  const double alpha = damping.local(system.t), c = damping.viscous(system.t);
+  const int first_slab = grid.active_lo[D - 1];
+  std::vector<double> slab_power(static_cast<std::size_t>(grid.active_hi[D - 1] - first_slab + 1), 0.0);
+  for_each_active_node(grid, [&](std::size_t n, const Index<D>& ijk) {
+    const bool massive = grid.mass[n] > threshold;
+    double power = 0.0;
+    for (int d = 0; d < D; ++d) {
+      const double v = grid.velocity[d][n];
+      grid.velocity_change[d][n] = v;  // v_I before the update
+      if (!massive) {
+        grid.velocity[d][n] = 0.0;
+        continue;
+      }
+      double f = grid.force[d][n], f_d = 0.0;
+      if (!((damping.undamped[n] >> d) & 1u)) {
+        f_d = -alpha * std::abs(f) * static_cast<double>((v > 0.0) - (v < 0.0)) - c * grid.mass[n] * v;
+        f += f_d;
+      }
+      grid.momentum[d][n] += f * dt;
+      grid.velocity[d][n] = grid.momentum[d][n] / grid.mass[n];
+      power += f_d * 0.5 * (v + grid.velocity[d][n]);
+    }
+    slab_power[static_cast<std::size_t>(ijk[D - 1] - first_slab)] += power;
+  });
+  system.damping_power = 0.0;
+  for (const double p : slab_power) system.damping_power += p;
+  system.damping_dissipated -= system.damping_power * dt;
+}
+
 template <int D, class Shape>
 void grid_integrate(DiscreteSystem<D, Shape>& system) {
   auto& grid = system.grid;
   const double threshold = system.mass_threshold, dt = system.dt;
+  add_external_forces(system);
   fold_mirror_planes(system, grid.force, false);
-  for_each_active_node(grid, [&](std::size_t n, const Index<D>&) {
-    const bool massive = grid.mass[n] > threshold;
-    for (int d = 0; d < D; ++d) {
-      grid.velocity_change[d][n] = grid.velocity[d][n];  // v_I before the update
-      if (massive) {
-        grid.momentum[d][n] += grid.force[d][n] * dt;
-        grid.velocity[d][n] = grid.momentum[d][n] / grid.mass[n];
-      } else {
-        grid.velocity[d][n] = 0.0;
+  if (system.damping) {
+    integrate_damped(system);
+  } else {
+    for_each_active_node(grid, [&](std::size_t n, const Index<D>&) {
+      const bool massive = grid.mass[n] > threshold;
+      for (int d = 0; d < D; ++d) {
+        grid.velocity_change[d][n] = grid.velocity[d][n];  // v_I before the update
+        if (massive) {
+          grid.momentum[d][n] += grid.force[d][n] * dt;
+          grid.velocity[d][n] = grid.momentum[d][n] / grid.mass[n];
+        } else {
+          grid.velocity[d][n] = 0.0;
+        }
       }
-    }
-  });
+    });
+  }
   apply_velocity_constraints(system, system.t + dt);
   for_each_active_node(grid, [&](std::size_t n, const Index<D>&) {
     for (int d = 0; d < D; ++d) grid.velocity_change[d][n] = grid.velocity[d][n] - grid.velocity_change[d][n];

@@ -1,8 +1,10 @@
 // The analytical solution a case is measured against, chosen by the `type`
 // of its [reference] table (README "Verification"). Each solution reads and
 // checks its own keys, may set initial conditions, is sampled during the
-// run, and reports named error norms for summary.json and sweeps. Adding
-// one is one new file and one line in the variant below.
+// run, and reports named error norms for summary.json and sweeps, and may
+// report named measures (quantities without a closed form to compare with,
+// such as a final length) for summary.json. Adding one is one new file and
+// one line in the variant below.
 #pragma once
 #include <cstdint>
 #include <map>
@@ -11,13 +13,21 @@
 
 #include "core/registry.hpp"
 #include "verification/axial_vibration.hpp"
+#include "verification/cantilever.hpp"
 #include "verification/column_self_weight.hpp"
+#include "verification/elastic_impact.hpp"
 #include "verification/elastic_wave.hpp"
+#include "verification/plate_with_hole.hpp"
+#include "verification/taylor_impact.hpp"
+#include "verification/thick_cylinder.hpp"
 #include "verification/uniaxial_stress.hpp"
+#include "verification/uniform_stress.hpp"
 
 namespace flowmpm {
 
-using ReferenceSolution = std::variant<AxialVibration, ElasticWave, UniaxialStress, ColumnSelfWeight>;
+using ReferenceSolution =
+    std::variant<AxialVibration, ElasticWave, UniaxialStress, ColumnSelfWeight, UniformStressReference, PlateWithHole,
+                 ThickCylinder, Cantilever, ElasticImpact, TaylorImpact>;
 using ReferenceSolutions = Registry<ReferenceSolution>;
 
 class Reference {
@@ -44,6 +54,18 @@ class Reference {
   }
   std::map<std::string, double> errors() const {
     return std::visit([](const auto& s) { return s.errors(); }, solution_);
+  }
+  // Empty for a solution without measures.
+  std::map<std::string, double> measures() const {
+    return std::visit(
+        [](const auto& s) -> std::map<std::string, double> {
+          if constexpr (requires { s.measures(); }) {
+            return s.measures();
+          } else {
+            return {};
+          }
+        },
+        solution_);
   }
 
  private:

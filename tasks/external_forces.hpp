@@ -1,0 +1,69 @@
+// External forces on the grid (README "Loads"), added to the nodal forces
+// at the start of grid_integrate, before the mirror planes fold them, with
+// the loads evaluated at the start of the step:
+//   nodal forces:        f_I += F(t) on each node of the set;
+//   tractions:           f_I += N_I(x_f) t(t) A_f,
+//   pressures:           f_I += -N_I(x_f) p(t) A_f n_f,
+// x_f = x_p + offset the centre of a loaded face of particle p, A_f its
+// area and n_f its outward normal: the traction acts on the body's surface,
+// not at the particle's centre; N_I are renormalised over the nodes that
+// carry mass, so that the whole force acts. (CB-Geo mpm maps a particle traction from
+// the particle's centre, which puts part of it a cell inside the body:
+// README "The uniaxial traction benchmark".) Serial, in a fixed order: a
+// scene's loaded faces are few. Body forces enter p2g_force (tasks/p2g.hpp).
+#pragma once
+#include "discretisation/discrete_system.hpp"
+#include "discretisation/stencil.hpp"
+
+namespace flowmpm {
+
+template <int D, class Shape>
+void add_external_forces(DiscreteSystem<D, Shape>& system) {
+  auto& grid = system.grid;
+  const double t = system.t;
+  for (const NodalLoad& load : system.loads.nodal) {
+    for (int d = 0; d < D; ++d) {
+      if (!load.force[d]) continue;
+      const double f = (*load.force[d])(t);
+      for (const std::size_t n : load.nodes) grid.force[d][n] += f;
+    }
+  }
+  for (const SurfaceLoad<D>& load : system.loads.surface) {
+    Vec<D> traction = Vec<D>::Zero();
+    for (int d = 0; d < D; ++d)
+      if (load.traction[d]) traction[d] = (*load.traction[d])(t);
+    const double pressure = load.pressure ? (*load.pressure)(t) : 0.0;
+    const ParticleBatch<D>& b = system.batches[load.batch];
+    for (const LoadedFace<D>& face : load.faces) {
+      const Vec<D> x = b.x[face.particle] + face.offset;
+      // The face's stencil must lie in the nodes the grid stages visit.
+      bool inside = true;
+      for (int d = 0; d < D; ++d) {
+        const double g = grid.coordinate(x, d);
+        inside = inside && g >= grid.active_lo[d] + Shape::reach_below && g < grid.active_hi[d] - Shape::reach_above + 1;
+      }
+      if (!inside) {
+        system.flags.fail("a loaded face at " + position_text<D>(x) + " (" + load.description +
+                          ") left the nodes near the material");
+        continue;
+      }
+      Vec<D> force = face.area * traction;
+      force[face.axis] -= pressure * face.area * face.sign;
+      // Only nodes that carry mass move: the face's force goes to those of
+      // its stencil, in proportion to N there. (A face on the last massive
+      // node plane reaches past it; the share of the node beyond would be
+      // lost.)
+      const Stencil<D, Shape, false> s(grid, x, b.half_width);
+      double carried = 0.0;
+      for (int a = 0; a < s.size; ++a)
+        if (grid.mass[s.node(a)] > system.mass_threshold) carried += s.N(a);
+      if (carried <= 0.0) continue;
+      for (int a = 0; a < s.size; ++a) {
+        if (grid.mass[s.node(a)] <= system.mass_threshold) continue;
+        for (int d = 0; d < D; ++d) grid.force[d][s.node(a)] += s.N(a) / carried * force[d];
+      }
+    }
+  }
+}
+
+}  // namespace flowmpm
