@@ -2,6 +2,9 @@
 // dimension of the analysis. Points are Vec3 whatever the dimension, the
 // axes the analysis does not have being 0.
 #pragma once
+#include <string_view>
+#include <vector>
+
 #include "core/parameter_table.hpp"
 #include "core/vec.hpp"
 

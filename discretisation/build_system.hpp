@@ -61,8 +61,8 @@ inline ParticleList body_particles(const BodySpec& body, int dimension, std::opt
   list.position = fill(body.shape, *lattice);
   list.volume.assign(list.position.size(), lattice->cell_volume());
   if (list.position.empty()) {
-    throw CaseError(body.where + ": expected a shape that holds particle centres of its lattice (spacing " +
-                    std::to_string(body.spacing[0]) + " m ...), got a " + body.shape.type() + " with none");
+    throw CaseError(body.where + ": expected a shape that holds particle centres of its lattice, got a " +
+                    body.shape.type() + " with none");
   }
   return list;
 }
@@ -117,7 +117,8 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
   double lightest = std::numeric_limits<double>::infinity();
   for (std::size_t bi = 0; bi < spec.bodies.size(); ++bi) {
     const BodySpec& body = spec.bodies[bi];
-    const ParticleList& list = particles[bi];
+    // Released once the batch is made: set-up needs no more memory than the sort.
+    const ParticleList list = std::move(particles[bi]);
     const std::size_t n = list.size();
     ParticleBatch<D> batch;
     batch.body = static_cast<int>(bi);

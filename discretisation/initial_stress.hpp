@@ -9,6 +9,7 @@
 //              plane stress and 1D keep their zero components.
 // Adding one is one new type and one line in the variant below.
 #pragma once
+#include <algorithm>
 #include <cmath>
 #include <variant>
 

@@ -69,6 +69,7 @@ struct Lattice {
 inline std::vector<Vec3> fill(const BodyShape& shape, const Lattice& lattice) {
   std::vector<Vec3> points;
   const std::size_t n = lattice.size();
+  points.reserve(n);
   for (std::size_t p = 0; p < n; ++p) {
     const Vec3 x = lattice.point(lattice.index(p));
     if (shape.contains(x)) points.push_back(x);

@@ -1,6 +1,7 @@
 // What a load (loads.hpp) reads besides its own table, and what it attaches
 // to when the system is built.
 #pragma once
+#include <algorithm>
 #include <optional>
 #include <string>
 #include <vector>

@@ -2,6 +2,8 @@
 // [[t, value], ...]): N in 3D, N/m (per unit thickness) in 2D, N/m^2 (per
 // unit cross-section) in 1D. A point load is a node set of one node.
 #pragma once
+#include <algorithm>
+
 #include "discretisation/load_context.hpp"
 
 namespace flowmpm {
