@@ -4,17 +4,21 @@
 #include <chrono>
 #include <cmath>
 
+#include <spdlog/sinks/basic_file_sink.h>
+#include <spdlog/sinks/dist_sink.h>
 #include <spdlog/spdlog.h>
 
 #include "core/errors.hpp"
 #include "core/number_text.hpp"
 #include "discretisation/shape_functions.hpp"
-#include "discretisation/stable_time_step.hpp"
 #include "engine/schemes.hpp"
 #include "engine/simulation.hpp"
+#include "engine/stable_time_step.hpp"
 #include "io/results_h5.hpp"
 #include "io/timeseries_csv.hpp"
 #include "io/xdmf.hpp"
+
+#include "flowmpm_build_info.hpp"
 
 namespace flowmpm {
 namespace {
@@ -29,50 +33,78 @@ std::string stored_fields(int dimension) {
   return "x, v (" + vec + "), mass, volume, stress, strain (6 Voigt)";
 }
 
+// The run's logger: with `console`, the program's console output at the
+// level the default logger has (through a sink of its own that filters at
+// that level), and with `file`, every info line in that file (run.log).
+std::shared_ptr<spdlog::logger> run_logger(const std::optional<std::filesystem::path>& file, bool console) {
+  const auto& program = spdlog::default_logger();
+  std::vector<spdlog::sink_ptr> sinks;
+  if (console) {
+    sinks.push_back(std::make_shared<spdlog::sinks::dist_sink_mt>(program->sinks()));
+    sinks.back()->set_level(program->level());
+  }
+  if (file) {
+    try {
+      sinks.push_back(std::make_shared<spdlog::sinks::basic_file_sink_mt>(file->string(), true));
+    } catch (const spdlog::spdlog_ex& e) {
+      throw std::runtime_error("cannot write " + file->string() + ": " + e.what());
+    }
+    sinks.back()->set_level(spdlog::level::info);
+  }
+  auto log = std::make_shared<spdlog::logger>("run", sinks.begin(), sinks.end());
+  log->set_level(std::min(program->level(), spdlog::level::info));
+  log->set_pattern("[%H:%M:%S.%e] %^%l%$ %v");
+  log->flush_on(spdlog::level::info);
+  return log;
+}
+
 template <int D, class Shape>
-void log_system(const Case& c, const DiscreteSystem<D, Shape>& system, const Scheme& scheme) {
-  spdlog::info("model: {}D ({}), scheme {} [{}], shape function {}, velocity update {}{}", D,
+void log_system(spdlog::logger& log, const Case& c, const DiscreteSystem<D, Shape>& system, const Scheme& scheme) {
+  log.info("model: {}D ({}), scheme {} [{}], shape function {}, velocity update {}{}", D,
                stress_state_name(system.stress_state), scheme.label, scheme.wiring.describe(), Shape::name,
                c.velocity_update,
                c.velocity_update == "blend" ? " (FLIP fraction " + std::to_string(system.flip_fraction) + ")" : "");
   std::string cells;
   for (int d = 0; d < D; ++d) cells += (d ? " x " : "") + std::to_string(system.grid.cells[d]);
-  spdlog::info("grid: {} cells, {} nodes, {} blocks of {}^{} cells ({} occupied)", cells,
+  log.info("grid: {} cells, {} nodes, {} blocks of {}^{} cells ({} occupied)", cells,
                system.grid.node_count(), system.blocks.block_count, BlockLayout<D, Shape>::block_cells, D,
                system.blocks.occupied.size());
   for (const auto& b : system.batches) {
     const auto& m = c.system.materials[b.material];
-    spdlog::info("body '{}': {} particles, material '{}' ({}, density {} kg/m^3, wave speed {:.4g} m/s)",
+    log.info("body '{}': {} particles, material '{}' ({}, density {} kg/m^3, wave speed {:.4g} m/s)",
                  c.system.bodies[b.body].name, b.size(), m.name, type_name(m.model), density(m.model),
                  wave_speed(m.model));
   }
-  spdlog::info("particle fields stored: {}", stored_fields(D));
+  log.info("particle fields stored: {}", stored_fields(D));
   for (const auto& k : system.constraints) {
-    spdlog::info("node set '{}': {} nodes, velocity prescribed along {}", k.name, k.nodes.size(),
+    log.info("node set '{}': {} nodes, velocity prescribed along {}", k.name, k.nodes.size(),
                  "xyz"[k.axis]);
   }
-  if (system.gravity.norm() > 0.0) spdlog::info("gravity: {} m/s^2", system.gravity.norm());
-  for (const auto& load : system.loads.surface) spdlog::info("load: {}", load.description);
-  for (const auto& load : system.loads.nodal) spdlog::info("load: {}", load.description);
-  for (const auto& load : system.loads.body) spdlog::info("load: {}", load.description);
+  if (system.gravity.norm() > 0.0) log.info("gravity: {} m/s^2", system.gravity.norm());
+  for (const auto& load : system.loads.surface) log.info("load: {}", load.description);
+  for (const auto& load : system.loads.nodal) log.info("load: {}", load.description);
+  for (const auto& load : system.loads.body) log.info("load: {}", load.description);
   if (system.damping) {
-    spdlog::info("damping: local alpha {}, viscous c {} 1/s (at t = 0; README \"Damping\")", system.damping->local(0.0),
-                 system.damping->viscous(0.0));
+    log.info("damping: local alpha {}, viscous c {} 1/s (at t = 0; README \"Damping\")", system.damping->local(0.0),
+             system.damping->viscous(0.0));
   }
   for (const auto& body : c.system.bodies) {
     if (body.initial_stress) {
-      spdlog::info("body '{}': initial stress {}", body.name, InitialStresses::name_of(*body.initial_stress));
+      log.info("body '{}': initial stress {}", body.name, InitialStresses::name_of(*body.initial_stress));
     } else if (body.particles && !body.particles->stress.empty()) {
-      spdlog::info("body '{}': initial stress per particle from {}", body.name, body.particles->source);
+      log.info("body '{}': initial stress per particle from {}", body.name, body.particles->source);
     }
   }
-  const StableStep stable = stable_time_step(c.system);
+  const StableStep stable = stable_time_step(c.system, scheme);
   if (c.dt_auto) {
-    spdlog::info("time: dt automatic, CFL {} (first step {:.4g} s; the stable limit at rest is {:.4g} s), to t = {} s",
-                 c.cfl, c.dt, stable.dt, c.end_time);
+    log.info("time: dt automatic, CFL {} of h/c = {:.4g} s (the stable limit is {:.3g} h/c for {} with {} at {:.3g} "
+             "particles per cell), to t = {:.6g} s",
+             c.cfl, stable.crossing, stable.factor, scheme.label, Shape::name, stable.particles_per_cell, c.end_time);
   } else {
-    spdlog::info("time: dt = {} s ({:.3g} of the stable limit {:.4g} s), {} steps to t = {} s", c.dt,
-                 c.dt / stable.dt, stable.dt, c.steps, c.end_time);
+    log.info("time: dt = {:.6g} s = {:.3g} h/c ({:.3g} of the stable limit {:.3g} h/c for {} with {} at {:.3g} "
+             "particles per cell), {} steps to t = {:.6g} s",
+             c.dt, c.dt / stable.crossing, c.dt / stable.dt(), stable.factor, scheme.label, Shape::name,
+             stable.particles_per_cell, c.steps, c.end_time);
   }
 }
 
@@ -82,7 +114,20 @@ RunSummary run(const Case& c, const RunOptions& options) {
   const Scheme& scheme = scheme_named(c.scheme);
   Simulation<D, Shape> sim(c.system, scheme.wiring, c.dt_auto ? 0.0 : c.dt);
   auto& system = sim.system();
-  log_system(c, system, scheme);
+  const auto& dir = c.output.directory;
+  if (options.write_results) {
+    std::error_code error;
+    std::filesystem::create_directories(dir, error);
+    if (error) {
+      throw CaseError("output directory " + dir.string() + ": cannot create it (" + error.message() +
+                      "); set output.directory or --output");
+    }
+  }
+  const auto log = run_logger(options.write_results ? std::optional(dir / "run.log") : std::nullopt,
+                              options.log_to_console);
+  log->info("case '{}' from {}, {} thread{}, output in {}", c.name, c.file.string(), options.threads,
+            options.threads == 1 ? "" : "s", options.write_results ? dir.string() : "(none)");
+  log_system(*log, c, system, scheme);
 
   RunSummary summary;
   summary.case_name = c.name;
@@ -113,34 +158,32 @@ RunSummary run(const Case& c, const RunOptions& options) {
     reference->initialise(system);
     if (reference->samples() > 0) sample_every = std::max<std::int64_t>(1, planned_steps / reference->samples());
     sample_reference();
-    spdlog::info("reference: {} (errors sampled every {} step{})", reference->type(), sample_every,
+    log->info("reference: {} (errors sampled every {} step{})", reference->type(), sample_every,
                  sample_every == 1 ? "" : "s");
   }
 
-  const auto& dir = c.output.directory;
   const std::size_t body_count = c.system.bodies.size();
   std::vector<std::string> body_names;
   for (const auto& b : c.system.bodies) body_names.push_back(b.name);
   std::optional<ResultsH5> h5;
+  std::optional<XdmfIndex> xdmf;
   std::optional<TimeseriesCsv> csv;
   if (options.write_results) {
-    std::error_code error;
-    std::filesystem::create_directories(dir, error);
-    if (error) {
-      throw CaseError("output directory " + dir.string() + ": cannot create it (" + error.message() +
-                      "); set output.directory or --output");
-    }
-    h5.emplace(dir / "results.h5");
+    ResultsMetadata metadata{FLOWMPM_VERSION, FLOWMPM_COMMIT, c.name, c.file.string(), D,
+                             stress_state_name(system.stress_state), scheme.label, Shape::name, {}};
+    for (const NamedMaterial& m : c.system.materials) metadata.materials.push_back(m.name);
+    h5.emplace(dir / "results.h5", metadata);
+    xdmf.emplace(dir / "results.xdmf", "results.h5");
     std::vector<std::string> error_names;
     if (reference)
       for (const auto& [name, value] : reference->errors()) error_names.push_back(name);
-    csv.emplace(dir / "timeseries.csv", body_names, error_names);
+    csv.emplace(dir / "timeseries.csv", body_names, reaction_names(sim.diagnostics(body_count)), error_names);
   }
   auto write_output = [&] {
     const auto t0 = Clock::now();
     if (options.write_results) {
       h5->write(sim.snapshot(c.output.fields));
-      write_xdmf(dir / "results.xdmf", "results.h5", *h5);
+      xdmf->update(*h5);
       // The error norms so far: over the particles and the samples up to now.
       std::vector<double> errors;
       if (reference)
@@ -168,15 +211,18 @@ RunSummary run(const Case& c, const RunOptions& options) {
     }
     if (system.damping) summary.damping_dissipated = system.damping_dissipated;
     summary.energy_final = final_state.kinetic_energy + final_state.strain_energy;
-    if (options.write_results) write_summary(dir / "summary.json", summary);
+    if (options.write_results) {
+      xdmf->finish(*h5);
+      write_summary(dir / "summary.json", summary);
+    }
   };
 
   // Blow-up guard: the state is kept every guard_every steps so that the
   // last one that passed can be written when the run breaks down.
   ParticleSnapshot last_good;
   std::int64_t last_written = -1;
-  const StableStep stable = stable_time_step(c.system);
-  const double c_max = system.grid.h.minCoeff() / stable.dt;  // fastest wave speed
+  const StableStep stable = stable_time_step(c.system, scheme);
+  const double c_max = system.grid.h.minCoeff() / stable.crossing;  // fastest wave speed
   const double speed_limit = c.guard_speed_factor * c_max;
   auto check_guard = [&] {
     if (system.max_speed_sq <= speed_limit * speed_limit) return;
@@ -190,7 +236,6 @@ RunSummary run(const Case& c, const RunOptions& options) {
       return fmt::format("; the last good state written is step {} in results.h5", last_written);
     }
     h5->write(last_good);
-    write_xdmf(dir / "results.xdmf", "results.h5", *h5);
     return fmt::format("; the last good state (step {}, t = {:.6g} s) is the last step in results.h5",
                        last_good.step, last_good.time);
   };
@@ -242,7 +287,7 @@ RunSummary run(const Case& c, const RunOptions& options) {
                             summary.step_loop_seconds;
         const double fraction = system.t / c.end_time;
         const double eta = seconds_since(loop_start) * (1.0 - fraction) / fraction;
-        spdlog::info("step {} ({:.0f}%), t = {:.6g} s, dt = {:.3g} s, {:.3g} particle-steps/s, ETA {:.0f} s",
+        log->info("step {} ({:.0f}%), t = {:.6g} s, dt = {:.3g} s, {:.3g} particle-steps/s, ETA {:.0f} s",
                      system.step, 100.0 * fraction, system.t, system.dt, rate, eta);
       }
     }
@@ -250,11 +295,34 @@ RunSummary run(const Case& c, const RunOptions& options) {
     if (summary.status == "completed") {
       const std::string message = e.what() + write_last_good();
       finish("failed: " + message);
+      log->error("{}", message);
       throw SimulationError(message);
     }
+    log->error("{}", e.what());
     throw;
   }
   finish("completed");
+  log->info("done: {} steps, {} particles, {:.3f} s in the step loop, {:.4g} particle-steps/s (set-up {:.3f} s, "
+            "output {:.3f} s)",
+            summary.steps, summary.particles, summary.step_loop_seconds, summary.particle_steps_per_second,
+            summary.setup_seconds, summary.output_seconds);
+  for (const auto& b : summary.bodies) {
+    log->info("body '{}' at t = {:.6g} s: mean stress xx {:.6g} yy {:.6g} zz {:.6g} Pa, mean strain xx {:.6g} "
+              "yy {:.6g} zz {:.6g}",
+              b.name, system.t, b.mean_stress[0], b.mean_stress[1], b.mean_stress[2], b.mean_strain[0],
+              b.mean_strain[1], b.mean_strain[2]);
+  }
+  if (summary.energy_initial > 0.0) {
+    log->info("energy (kinetic + strain): {:.6g} J at the start, {:.6g} J at the end, drift {:+.3g} %",
+              summary.energy_initial, summary.energy_final, 100.0 * summary.energy_drift());
+  }
+  for (const auto& [name, value] : summary.errors) {
+    log->info("error against the {} reference: {} = {:.4g}", reference->type(), name, value);
+  }
+  for (const auto& [name, value] : summary.measures) {
+    log->info("measured by the {} reference: {} = {:.6g}", reference->type(), name, value);
+  }
+  if (summary.damping_dissipated) log->info("energy dissipated by damping: {:.6g} J", *summary.damping_dissipated);
   return summary;
 }
 
@@ -270,7 +338,7 @@ void describe_case(const Case& c) {
     const Scheme& scheme = scheme_named(c.scheme);
     Simulation<D, Shape> sim(c.system, scheme.wiring, c.dt_auto ? 0.0 : c.dt);
     if (c.reference) c.reference->initialise(sim.system());
-    log_system(c, sim.system(), scheme);
+    log_system(*spdlog::default_logger(), c, sim.system(), scheme);
   });
 }
 

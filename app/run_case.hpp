@@ -15,12 +15,18 @@ struct RunOptions {
   bool write_results = true;      // results.h5, results.xdmf, timeseries.csv, summary.json
   double progress_seconds = 5.0;  // seconds between progress lines
   double setup_seconds = 0.0;     // time spent before run_case (reading the case)
+  // Log to the program's console as well as to run.log (a sweep's cases
+  // log to their run.log only).
+  bool log_to_console = true;
   // Set from a signal handler to stop the run after the current step.
   const std::atomic<bool>* interrupt = nullptr;
 };
 
-// Runs the case. Throws SimulationError (after writing the summary with a
-// failed status) if the solution breaks down.
+// Runs the case, logging to the console and, with write_results, to
+// run.log in the output directory. Throws SimulationError (after logging it
+// and writing the summary with a failed status) if the solution breaks down
+// or the run is interrupted, CaseError for what only the built system can
+// tell about the case.
 RunSummary run_case(const Case& c, const RunOptions& options);
 
 // Logs the model a case builds, without running it ("flowmpm check").

@@ -5,16 +5,21 @@
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
+#include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 #include <tbb/global_control.h>
 #include <tbb/info.h>
 
 #include "app/run_case.hpp"
 #include "app/run_sweep.hpp"
+#ifdef FLOWMPM_MPI
+#include "app/run_sweep_mpi.hpp"
+#endif
 #include "core/errors.hpp"
 #include "io/sweep_file.hpp"
 
@@ -28,12 +33,38 @@ struct Arguments {
   int threads = 0;  // 0: all cores
   int jobs = 1;
   bool quiet = false;
+  bool mpi = false, collect = false;
+  flowmpm::SweepShard shard;
   std::vector<std::string> overrides;
 };
 
 [[noreturn]] void bad_usage(const std::string& message) {
   std::cerr << "flowmpm: " << message << "\n(see flowmpm --help)\n";
   std::exit(1);
+}
+
+// --shard I/N: the cases whose number is I modulo N.
+std::string read_shard(const std::string& text, flowmpm::SweepShard& shard) {
+  const auto slash = text.find('/');
+  const auto whole = [](const std::string& part, std::size_t& value) {
+    if (part.empty() || part.size() > 9 || part.find_first_not_of("0123456789") != std::string::npos) return false;
+    value = std::stoul(part);
+    return true;
+  };
+  if (slash == std::string::npos || !whole(text.substr(0, slash), shard.index) ||
+      !whole(text.substr(slash + 1), shard.count) || shard.count == 0 || shard.index >= shard.count) {
+    return "expected I/N, whole numbers with 0 <= I < N (the cases whose number is I modulo N), got " + text;
+  }
+  return {};
+}
+
+// The processes an MPI launcher started this one with (1 if none): mpirun
+// of Open MPI, or of MPICH and Intel MPI (Hydra).
+int launched_processes() {
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"}) {
+    if (const char* value = std::getenv(name)) return std::max(1, std::atoi(value));
+  }
+  return 1;
 }
 
 // Parses the command line (CLI11): one command, each with its own options
@@ -77,11 +108,32 @@ Arguments parse(int argc, char** argv) {
       "run every case of a sweep file (a base case and the keys to vary); writes sweep.csv and each case's "
       "results in cases/NNN/; running it again skips the cases already completed");
   sweep->add_option("sweep", a.case_file, "the sweep file (TOML)")->type_name("SWEEP.toml");
-  sweep->add_option("--jobs", a.jobs, "cases run side by side (default 1); the threads are split between them")
-      ->check(CLI::Range(1, 1024));
+  CLI::Option* jobs =
+      sweep->add_option("--jobs", a.jobs, "cases run side by side (default 1); the threads are split between them")
+          ->check(CLI::Range(1, 1024));
   threads(sweep);
   sweep->add_option("--output", a.output, "output directory (overrides the sweep file's output)");
   quiet(sweep);
+  CLI::Option* mpi = sweep->add_flag(
+      "--mpi", a.mpi,
+      "run the cases over the ranks of an MPI job (mpirun -n R flowmpm sweep SWEEP.toml --mpi): each rank runs one "
+      "case at a time on its --threads; rank 0 writes sweep.csv");
+  CLI::Option* shard =
+      sweep
+          ->add_option_function<std::string>(
+              "--shard",
+              [&](const std::string& text) {
+                if (const std::string problem = read_shard(text, a.shard); !problem.empty()) {
+                  throw CLI::ValidationError("--shard", problem);
+                }
+              },
+              "run only the cases whose number is I modulo N (one job of a scheduler's job array); writes their "
+              "folders and no sweep.csv")
+          ->type_name("I/N");
+  CLI::Option* collect = sweep->add_flag(
+      "--collect", a.collect, "run nothing: build sweep.csv from the cases' folders (after the shards have run)");
+  mpi->excludes(shard)->excludes(jobs);
+  collect->excludes(mpi)->excludes(shard)->excludes(jobs);
 
   try {
     app.parse(argc, argv);
@@ -98,27 +150,58 @@ Arguments parse(int argc, char** argv) {
   if (chosen.empty()) bad_usage("no command given: run, check or sweep");
   a.command = chosen.front()->get_name();
   if (a.case_file.empty()) bad_usage(a.command + ": no " + (a.command == "sweep" ? "sweep" : "case") + " file given");
+#ifndef FLOWMPM_MPI
+  if (a.mpi) bad_usage("--mpi: this flowmpm was built without MPI (install libopenmpi-dev and build again)");
+#endif
+  const int processes = launched_processes();
+  if (processes > 1 && !a.mpi && a.command != "check") {
+    bad_usage("started by an MPI launcher as " + std::to_string(processes) + " processes, each of which would run " +
+              (a.command == "sweep" ? "the whole sweep; add --mpi to share the cases out"
+                                    : "the whole case; run a case as one process"));
+  }
   return a;
 }
 
-// flowmpm sweep: reads and checks the whole sweep, then runs it.
-int sweep(const Arguments& args, int threads) {
+// flowmpm sweep: reads and checks the whole sweep, then runs it (on
+// threads, on MPI ranks or as a shard) or collects its table.
+int sweep(const Arguments& args, int threads, int& argc, char**& argv) {
+  bool root = true;  // the process that reports
+#ifdef FLOWMPM_MPI
+  std::optional<flowmpm::MpiSession> mpi;
+  if (args.mpi) {
+    mpi.emplace(argc, argv);
+    root = mpi->rank() == 0;
+  }
+#else
+  (void)argc;
+  (void)argv;
+#endif
   flowmpm::Sweep s;
   try {
     s = flowmpm::read_sweep(args.case_file);
   } catch (const flowmpm::CaseError& e) {
-    spdlog::error("{}", e.what());
+    if (root) spdlog::error("{}", e.what());
     return 1;
   }
   if (!args.output.empty()) s.output = args.output;
   flowmpm::SweepOptions options;
   options.jobs = args.jobs;
   options.threads = threads;
+  options.shard = args.shard;
   options.interrupt = &interrupted;
   try {
-    const flowmpm::SweepSummary summary = flowmpm::run_sweep(s, options);
+    flowmpm::SweepSummary summary;
+    if (args.collect) {
+      summary = flowmpm::collect_sweep(s);
+#ifdef FLOWMPM_MPI
+    } else if (mpi) {
+      summary = flowmpm::run_sweep_mpi(s, options, *mpi);
+#endif
+    } else {
+      summary = flowmpm::run_sweep(s, options);
+    }
     if (summary.interrupted) return 130;
-    return summary.failed > 0 ? 2 : 0;
+    return summary.failed > 0 || summary.missing > 0 ? 2 : 0;
   } catch (const std::exception& e) {
     spdlog::error("{}", e.what());
     return 2;
@@ -129,6 +212,9 @@ int sweep(const Arguments& args, int threads) {
 
 int main(int argc, char** argv) {
   const Arguments args = parse(argc, argv);
+  // The log (progress, warnings, errors) goes to stderr; stdout carries only
+  // what a command prints as its result ("check": CASE: ok).
+  spdlog::set_default_logger(spdlog::stderr_color_mt("flowmpm"));
   spdlog::set_pattern("[%H:%M:%S.%e] %^%l%$ %v");
   if (args.quiet) spdlog::set_level(spdlog::level::warn);
 
@@ -139,7 +225,7 @@ int main(int argc, char** argv) {
   // Ctrl-C or a termination request: finish the current step, keep results.
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
-  if (args.command == "sweep") return sweep(args, threads);
+  if (args.command == "sweep") return sweep(args, threads, argc, argv);
 
   flowmpm::Case c;
   const auto read_start = std::chrono::steady_clock::now();
@@ -149,7 +235,6 @@ int main(int argc, char** argv) {
     }
     c = flowmpm::read_case(args.case_file, args.overrides);
     if (!args.output.empty()) c.output.directory = args.output;
-    spdlog::info("case '{}' read from {}", c.name, args.case_file);
     if (args.command == "check") {
       flowmpm::describe_case(c);
       std::cout << args.case_file << ": ok\n";
@@ -165,36 +250,12 @@ int main(int argc, char** argv) {
   options.interrupt = &interrupted;
   options.setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - read_start).count();
   try {
-    spdlog::info("running on {} thread{}, output in {}", threads, threads == 1 ? "" : "s",
-                 c.output.directory.string());
-    const flowmpm::RunSummary s = flowmpm::run_case(c, options);
-    spdlog::info("done: {} steps, {} particles, {:.3f} s in the step loop, {:.4g} particle-steps/s "
-                 "(set-up {:.3f} s, output {:.3f} s)",
-                 s.steps, s.particles, s.step_loop_seconds, s.particle_steps_per_second, s.setup_seconds,
-                 s.output_seconds);
-    for (const auto& b : s.bodies) {
-      spdlog::info("body '{}' at t = {} s: mean stress xx {:.6g} yy {:.6g} zz {:.6g} Pa, "
-                   "mean strain xx {:.6g} yy {:.6g} zz {:.6g}",
-                   b.name, c.end_time, b.mean_stress[0], b.mean_stress[1], b.mean_stress[2], b.mean_strain[0],
-                   b.mean_strain[1], b.mean_strain[2]);
-    }
-    if (s.energy_initial > 0.0) {
-      spdlog::info("energy (kinetic + strain): {:.6g} J at the start, {:.6g} J at the end, drift {:+.3g} %",
-                   s.energy_initial, s.energy_final, 100.0 * s.energy_drift());
-    }
-    for (const auto& [name, value] : s.errors) {
-      spdlog::info("error against the {} reference: {} = {:.4g}", c.reference->type(), name, value);
-    }
-    for (const auto& [name, value] : s.measures) {
-      spdlog::info("measured by the {} reference: {} = {:.6g}", c.reference->type(), name, value);
-    }
-    if (s.damping_dissipated) spdlog::info("energy dissipated by damping: {:.6g} J", *s.damping_dissipated);
+    flowmpm::run_case(c, options);
   } catch (const flowmpm::CaseError& e) {
     spdlog::error("{}", e.what());
     return 1;
-  } catch (const flowmpm::SimulationError& e) {
-    spdlog::error("{}", e.what());
-    return interrupted ? 130 : 2;
+  } catch (const flowmpm::SimulationError&) {
+    return interrupted ? 130 : 2;  // run_case logged it
   } catch (const std::exception& e) {
     spdlog::error("{}", e.what());
     return 2;

@@ -10,6 +10,7 @@
 #pragma once
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <numbers>
 #include <type_traits>
 
@@ -98,6 +99,7 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
     cells[d] = spec.grid.cells[d];
   }
   system.grid = Grid<D>(origin, h, cells);
+  if constexpr (Shape::gradient_jumps) system.grid.stiffness.assign(system.grid.node_count(), 0.0);
   system.blocks = BlockLayout<D, Shape>(cells);
   for (const auto& m : spec.materials) system.materials.push_back(m.model);
   for (int d = 0; d < D; ++d) system.gravity[d] = spec.gravity[d];
@@ -114,7 +116,6 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
   }
   resolve_overlaps(spec, particles);
 
-  double lightest = std::numeric_limits<double>::infinity();
   for (std::size_t bi = 0; bi < spec.bodies.size(); ++bi) {
     const BodySpec& body = spec.bodies[bi];
     // Released once the batch is made: set-up needs no more memory than the sort.
@@ -131,7 +132,6 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
       for (int d = 0; d < D; ++d) x[d] = list.position[p][d];
       batch.x.push_back(x);
       batch.mass.push_back(rho * list.volume[p]);
-      lightest = std::min(lightest, rho * list.volume[p]);
     }
     batch.v.assign(n, v0);
     if (spec.keep_initial_positions) batch.x0 = batch.x;
@@ -182,9 +182,13 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
     }
     system.batches.push_back(std::move(batch));
   }
-  // A node holding less than a millionth of the lightest particle's mass
-  // only sees the far tail of a shape function: its v = p / m is noise.
-  system.mass_threshold = 1e-6 * lightest;
+  // Particle ids in the order the particles were made: their rows in the output.
+  std::uint32_t next_id = 0;
+  for (auto& batch : system.batches) {
+    batch.id.resize(batch.size());
+    std::iota(batch.id.begin(), batch.id.end(), next_id);
+    next_id += static_cast<std::uint32_t>(batch.size());
+  }
 
   std::vector<std::vector<std::size_t>> node_set_nodes;
   for (const NodeSetSpec& set : spec.node_sets) {
@@ -210,7 +214,11 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
       if (set.velocity[d]) system.constraints.push_back({set.name, nodes, d, *set.velocity[d]});
     }
     auto pairs = ghost_mirror_pairs<D, Shape>(system, set, nodes);
-    if (!pairs.empty()) system.mirror_planes.push_back({set.name, std::move(pairs), set.velocity});
+    if (!pairs.empty()) {
+      for (NodeConstraint& k : system.constraints)
+        if (k.name == set.name) k.mirror_plane = static_cast<int>(system.mirror_planes.size());
+      system.mirror_planes.push_back({set.name, std::move(pairs), set.velocity});
+    }
     node_set_nodes.push_back(std::move(nodes));
   }
 

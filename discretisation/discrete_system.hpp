@@ -19,12 +19,17 @@
 
 namespace flowmpm {
 
-// Prescribed velocity of one axis on a set of nodes.
+// Prescribed velocity of one axis on a set of nodes, and the reaction: the
+// force the constraint applied on the body along that axis in the last
+// step (N; per unit thickness in 2D, N/m, and per unit cross-section in 1D,
+// N/m^2).
 struct NodeConstraint {
   std::string name;
   std::vector<std::size_t> nodes;
   int axis = 0;
   TimeFunction velocity;  // m/s
+  int mirror_plane = -1;  // index into mirror_planes when the set is one
+  double reaction = 0.0;
 };
 
 // A constrained plane at the edge of the material, for shape functions that
@@ -90,8 +95,6 @@ struct DiscreteSystem {
   double damping_power = 0.0;
   double damping_dissipated = 0.0;
   double flip_fraction = 1.0;
-  // Nodes lighter than this carry no velocity (v = p / m would be noise).
-  double mass_threshold = 0.0;
 
   double t = 0.0, dt = 0.0;  // time at the start of the step, time step (s)
   double max_speed_sq = 0.0;  // largest |v_p|^2 after the last step (m^2/s^2)

@@ -29,6 +29,10 @@ struct Grid {
   // grid stage that set it) and dv, the velocity change of grid_integrate.
   std::vector<double> mass;
   VectorField momentum, force, velocity, velocity_change;
+  // sum_p V_p M_p |grad N_Ip|^2 (N/m), M the P-wave modulus: the node's
+  // stiffness, for shape functions whose gradient jumps (held_node in
+  // tasks/grid_update.hpp); empty for the others.
+  std::vector<double> stiffness;
 
   // Only nodes inside [active_lo, active_hi] (inclusive) can carry mass;
   // grid stages clear and visit that box alone.

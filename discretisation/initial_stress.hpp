@@ -1,6 +1,7 @@
 // The stress a body's particles start with (Pa, Voigt order, compression
 // negative), chosen by the `type` of a body's initial_stress table:
-//   uniform:   `stress`, six components (xx, yy, zz, yz, xz, xy);
+//   uniform:   `stress`, six components listed xx, yy, zz, xy, yz, xz
+//              (as results.h5 writes them);
 //   geostatic: from gravity and the depth below the body's top,
 //              sigma_v = -rho |g| (top - z) along the gravity axis z, each
 //              horizontal normal stress K0 sigma_v (`k0`), no shear. The
@@ -32,8 +33,9 @@ struct UniformStress {
   static UniformStress read(ParameterTable& t, const InitialStressContext& c) {
     UniformStress u;
     const std::vector<double> s = t.numbers("stress", 6);
-    std::copy(s.begin(), s.end(), u.stress.begin());
-    // The components the stress state of the analysis does not carry must be 0.
+    for (int k = 0; k < 6; ++k) u.stress[voigt_slot_of_listed[k]] = s[k];
+    // The components the stress state of the analysis does not carry must be 0
+    // (Voigt slots: xx, yy, zz, yz, xz, xy).
     const bool allowed[3][6] = {{true, false, false, false, false, false},
                                 {true, true, !c.plane_stress, false, false, true},
                                 {true, true, true, true, true, true}};

@@ -35,6 +35,7 @@ struct ParticleBatch {
   std::vector<Vec<D>> x0;                  // initial positions, only when a reference needs them
   std::vector<double> mass, volume;        // kg, m^3
   std::vector<Voigt> stress, strain;       // Pa, -
+  std::vector<std::uint32_t> id;           // made in this order at set-up: the output row
   MaterialStates states;                   // the model's internal variables
 
   // Particles of block b are [block_begin[b], block_begin[b + 1]).
@@ -64,6 +65,7 @@ struct ParticleBatch {
     f("volume", self.volume);
     f("stress", self.stress);
     f("strain", self.strain);
+    f("id", self.id);
     std::visit([&](auto& states) { f("state", states); }, self.states);
   }
 };

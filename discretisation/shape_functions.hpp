@@ -2,6 +2,9 @@
 //   static constexpr const char* name;     // the case file's analysis.shape_function
 //   static constexpr int support;          // nodes per axis of its 1D stencil
 //   static constexpr int reach_below, reach_above;  // nodes c - below ... c + above of cell c
+//   static constexpr bool gradient_jumps;  // the gradient stays finite where N vanishes (linear)
+//   static constexpr std::array<double, 4> stable_factor_usl, stable_factor_remapped;
+//                                          // largest stable dt in h / c, 1 to 4 particles per cell
 //   static void stencil(double g, double inv_h, double half_width, int& base,
 //                       double (&w)[support], double (&dw)[support]);
 // Adding one is one new file and one line in the list below; the engine is

@@ -10,6 +10,7 @@
 // continuous, so a particle crossing a cell face makes no jump in force.
 // Requires l_p <= h / 2 (one particle or more per cell and axis).
 #pragma once
+#include <array>
 #include <cmath>
 
 #include "core/vec.hpp"
@@ -21,6 +22,11 @@ struct GimpShape {
   static constexpr int support = 4;  // nodes c - 1 ... c + 2 (at most 3 nonzero)
   static constexpr int reach_below = 1;
   static constexpr int reach_above = 2;
+  static constexpr bool gradient_jumps = false;  // |dN|^2 / N bounded
+  // Stable time step in h / c, 1 to 4 particles per cell (docs/STABILITY.md):
+  // USL at a free surface, where |dN|^2 / N = 2 ppc / h^2; USF and MUSL.
+  static constexpr std::array<double, 4> stable_factor_usl{0.67, 0.63, 0.55, 0.49};
+  static constexpr std::array<double, 4> stable_factor_remapped{1.16, 1.16, 1.16, 1.16};
 
   [[gnu::always_inline]] static void stencil(double g, double inv_h, double lp, int& base, double (&w)[support],
                                              double (&dw)[support]) {

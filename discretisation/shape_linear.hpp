@@ -4,6 +4,8 @@
 // a Dirac point, so the gradient jumps when a particle crosses a cell face
 // (the cell-crossing error of classic MPM).
 #pragma once
+#include <array>
+
 #include "core/vec.hpp"
 
 namespace flowmpm {
@@ -16,6 +18,17 @@ struct LinearShape {
   // c - reach_below ... c + reach_above.
   static constexpr int reach_below = 0;
   static constexpr int reach_above = 1;
+  // The gradient keeps its full size where the weight vanishes (at a cell
+  // face): the grid update watches the nodes this makes too light for their
+  // stiffness (tasks/grid_update.hpp held_node).
+  static constexpr bool gradient_jumps = true;
+  // The largest stable time step, in h / c, for 1 to 4 particles per cell
+  // and axis (docs/STABILITY.md): with the stress from the updated grid
+  // velocity (USL; the lattice allows 0.71-0.77, but at a moving free
+  // surface held_node leaves a weak growth, at most 1.016 per step at 0.55)
+  // and from velocities mapped from the particles (USF, MUSL).
+  static constexpr std::array<double, 4> stable_factor_usl{0.55, 0.55, 0.55, 0.55};
+  static constexpr std::array<double, 4> stable_factor_remapped{1.0, 1.0, 1.0, 1.0};
 
   // 1D stencil for a particle at grid coordinate g = (x - origin) / h with
   // half-width l_p / h (unused here): first node `base`, weights w and

@@ -1,9 +1,11 @@
 // What the time series and the summary report of a system's state: kinetic
-// and stored energy, and per body the volume-weighted mean stress and strain.
+// and stored energy, per body the volume-weighted mean stress and strain,
+// and the reactions of the velocity constraints.
 // Serial, in particle order, so the numbers do not depend on the thread count.
 #pragma once
 #include <array>
 #include <cstdint>
+#include <string>
 #include <type_traits>
 #include <vector>
 
@@ -16,12 +18,21 @@ struct BodyMeans {
   std::array<double, 6> strain{};  // -, volume-weighted mean
 };
 
+// The force a velocity constraint applied on the body along one axis in the
+// last step (NodeConstraint::reaction).
+struct Reaction {
+  std::string node_set;
+  int axis = 0;
+  double force = 0.0;  // N (N/m in 2D, N/m^2 in 1D)
+};
+
 struct Diagnostics {
   std::int64_t step = 0;
   double time = 0.0;            // s
   double kinetic_energy = 0.0;  // J (per unit thickness in 2D, cross-section in 1D)
   double strain_energy = 0.0;   // J: the materials' stored (recoverable) energy
-  std::vector<BodyMeans> bodies;  // per body of the spec
+  std::vector<BodyMeans> bodies;     // per body of the spec
+  std::vector<Reaction> reactions;   // per constrained node set and axis
 };
 
 // `body_count`: the spec's bodies (one batch each).
@@ -55,6 +66,7 @@ Diagnostics diagnostics(const DiscreteSystem<D, Shape>& system, std::size_t body
         },
         system.materials[b.material]);
   }
+  for (const NodeConstraint& c : system.constraints) row.reactions.push_back({c.name, c.axis, c.reaction});
   for (std::size_t i = 0; i < body_count; ++i) {
     for (int k = 0; k < 6; ++k) {
       row.bodies[i].stress[k] /= body_volume[i];

@@ -24,11 +24,14 @@ const std::vector<Scheme>& schemes() {
   using enum Stage;
   static const std::vector<Scheme> table = {
       {"usf", "USF",
-       chain({{p2g_momentum}}, {{grid_velocity}, {g2p_stress}, {p2g_force}, {grid_integrate}, {g2p_motion}})},
-      {"usl", "USL", chain({{p2g_momentum, p2g_force}}, {{grid_velocity}, {grid_integrate}, {g2p_motion, g2p_stress}})},
+       chain({{p2g_momentum}}, {{grid_velocity}, {g2p_stress}, {p2g_force}, {grid_integrate}, {g2p_motion}}),
+       false},
+      {"usl", "USL", chain({{p2g_momentum, p2g_force}}, {{grid_velocity}, {grid_integrate}, {g2p_motion, g2p_stress}}),
+       true},
       {"musl", "MUSL",
        chain({{p2g_momentum, p2g_force}},
-             {{grid_velocity}, {grid_integrate}, {g2p_motion}, {remap}, {grid_velocity}, {g2p_stress}})},
+             {{grid_velocity}, {grid_integrate}, {g2p_motion}, {remap}, {grid_velocity}, {g2p_stress}}),
+       false},
   };
   return table;
 }

@@ -17,6 +17,10 @@ struct Scheme {
   std::string name;   // the case file's analysis.scheme, "usl"
   std::string label;  // for people, "USL"
   Wiring wiring;
+  // The stress update takes the grid velocity after its update (USL), not
+  // one mapped from the particles (USF, MUSL): the shape functions' limit
+  // stable_factor_usl applies, else stable_factor_remapped.
+  bool stress_from_updated_grid;
 };
 
 const std::vector<Scheme>& schemes();

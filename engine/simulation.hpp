@@ -12,7 +12,7 @@
 #include "core/errors.hpp"
 #include "discretisation/build_system.hpp"
 #include "engine/diagnostics.hpp"
-#include "engine/snapshot.hpp"
+#include "engine/take_snapshot.hpp"
 #include "engine/step_graph.hpp"
 #include "tasks/stage_table.hpp"
 
@@ -40,42 +40,15 @@ class Simulation {
   const DiscreteSystem<D, Shape>& system() const { return system_; }
   const StepGraph& graph() const { return graph_; }
 
-  // The fields named in `names` (of output_fields), in output_fields' order.
+  // The fields named in `names` (engine/take_snapshot.hpp).
   ParticleSnapshot snapshot(const std::vector<std::string>& names) const {
     ParticleSnapshot s;
-    snapshot_into(s, names);
+    take_snapshot(system_, names, s);
     return s;
   }
-
-  // Fills `s`, reusing its storage.
+  // The same into `s`, reusing its storage.
   void snapshot_into(ParticleSnapshot& s, const std::vector<std::string>& names) const {
-    s.step = system_.step;
-    s.time = system_.t;
-    s.count = system_.particle_count();
-    std::size_t k = 0;  // fields kept from an earlier snapshot keep their storage
-    for (const OutputField& f : output_fields) {
-      if (std::ranges::find(names, f.name) == names.end()) continue;
-      if (k == s.fields.size() || std::string_view(s.fields[k].field.name) != f.name) {
-        s.fields.resize(k);
-        s.fields.push_back({f, {}, {}});
-      }
-      s.fields[k].real.clear();
-      s.fields[k].integer.clear();
-      ++k;
-    }
-    s.fields.resize(k);
-    auto field = [&](std::string_view name) -> SnapshotField* {
-      for (SnapshotField& f : s.fields)
-        if (name == f.field.name) return &f;
-      return nullptr;
-    };
-    for (const auto& b : system_.batches) {
-      // The stored columns, by name; then what is derived from the batch.
-      b.for_each_column([&](const char* name, const auto& column) {
-        if (SnapshotField* f = field(name)) append(f->real, column);
-      });
-      if (SnapshotField* f = field("material")) f->integer.insert(f->integer.end(), b.size(), b.material);
-    }
+    take_snapshot(system_, names, s);
   }
 
   // Sets the system's largest particle speed (it is measured during each
@@ -105,21 +78,6 @@ class Simulation {
   Diagnostics diagnostics(std::size_t body_count) const { return flowmpm::diagnostics(system_, body_count); }
 
  private:
-  // Columns as flat doubles: vectors padded to 3 components, tensors as 6.
-  static void append(std::vector<double>& out, const std::vector<Vec<D>>& column) {
-    for (const Vec<D>& x : column)
-      for (int d = 0; d < 3; ++d) out.push_back(d < D ? x[d] : 0.0);
-  }
-  static void append(std::vector<double>& out, const std::vector<double>& column) {
-    out.insert(out.end(), column.begin(), column.end());
-  }
-  static void append(std::vector<double>& out, const std::vector<Voigt>& column) {
-    for (const Voigt& a : column) out.insert(out.end(), a.begin(), a.end());
-  }
-  // A model's internal variables are not an output field.
-  template <class State>
-  static void append(std::vector<double>&, const std::vector<State>&) {}
-
   void run_node(int node) {
     if (observer_)
       for (Stage s : graph_.wiring().nodes[node]) observer_(s);

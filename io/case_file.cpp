@@ -11,9 +11,9 @@
 #include "core/number_text.hpp"
 #include "core/registry.hpp"
 #include "discretisation/shape_functions.hpp"
-#include "discretisation/stable_time_step.hpp"
 #include "engine/schemes.hpp"
-#include "engine/snapshot.hpp"
+#include "engine/stable_time_step.hpp"
+#include "engine/take_snapshot.hpp"
 #include "io/case_reader.hpp"
 #include "io/particle_file.hpp"
 
@@ -43,7 +43,15 @@ std::string apply_override(toml::table& root, const std::string& assignment) {
 
   std::vector<std::string> parts;
   std::stringstream ss(key);
-  for (std::string part; std::getline(ss, part, '.');) parts.push_back(part);
+  // "bodies[0].velocity" (as messages name keys) is "bodies.0.velocity".
+  for (std::string part; std::getline(ss, part, '.');) {
+    while (!part.empty() && part.back() == ']' && part.find('[') != std::string::npos) {
+      const std::size_t open = part.rfind('[');
+      parts.push_back(part.substr(0, open));
+      part = part.substr(open + 1, part.size() - open - 2);
+    }
+    parts.push_back(part);
+  }
   toml::node* node = &root;
   for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
     if (toml::table* t = node->as_table()) {
@@ -116,8 +124,9 @@ void read_analysis(TableReader t, Case& c) {
   if (t.has("dt") && t.node("dt")->is_string()) {
     t.require(t.string("dt") == "auto", "dt", "a time step in s, or \"auto\"");
     c.dt_auto = true;
+    // Without cfl: 0.8 of the stable limit, at most 0.5 (set with the bodies).
     c.cfl = t.number_or("cfl", 0.5);
-    t.require(c.cfl > 0.0 && c.cfl <= 1.0, "cfl", "a CFL number in (0, 1]");
+    t.require(c.cfl > 0.0, "cfl", "a positive CFL number");
     c.end_time = t.number("end_time");
     t.require(c.end_time > 0.0, "end_time", "a positive end time in s");
     if (t.has("steps")) t.fail("steps", "no steps with dt = \"auto\" (give end_time)");
@@ -366,10 +375,16 @@ void read_output(TableReader t, Case& c) {
   c.output.every = t.integer_or("every", 0);
   t.require(c.output.every >= 0, "every", "a number of steps >= 0 (0: about 20 over the run)");
   if (t.has("fields")) {
-    const std::vector<std::string> known = output_field_names();
+    // The built-in fields and the state variables of the case's models.
+    std::vector<Material> materials;
+    for (const NamedMaterial& m : c.system.materials) materials.push_back(m.model);
+    std::vector<std::string> known;
+    for (const OutputField& f : output_fields_of(materials)) known.emplace_back(f.name);
     c.output.fields = t.strings("fields");
     for (const std::string& name : c.output.fields) {
-      if (std::ranges::find(known, name) == known.end()) t.fail("fields", "field names among " + quoted_list(known));
+      if (std::ranges::find(known, name) == known.end()) {
+        t.fail("fields", "field names among " + quoted_list(known) + " (\"" + name + "\" is none of them)");
+      }
     }
     // The XDMF geometry needs the positions.
     if (std::ranges::find(c.output.fields, "position") == c.output.fields.end()) c.output.fields.push_back("position");
@@ -435,21 +450,30 @@ Case read_case(const std::filesystem::path& file, const std::vector<std::string>
     c.system.keep_initial_positions = true;
   }
   c.output.directory = "results/" + c.name;
-  c.output.fields = output_field_names();
+  c.output.fields = default_output_fields();
   if (t.has("output")) read_output(t.table("output"), c);
+  for (const char* needs_x0 : {"displacement", "initial_position"}) {
+    if (std::ranges::find(c.output.fields, needs_x0) != c.output.fields.end()) c.system.keep_initial_positions = true;
+  }
   t.reject_unknown_keys();
 
-  // The explicit step is stable only below the time a P wave takes to cross
-  // the smallest cell (CFL number 1).
-  const StableStep stable = stable_time_step(c.system);
-  if (c.dt_auto) c.dt = c.cfl * stable.dt;  // the first step's, particles at rest
-  c.system.dt = c.dt;
-  if (c.dt > stable.dt) {
-    TableReader analysis = t.table("analysis");
-    analysis.fail("dt", "a time step no larger than the stable limit h/c = " + readable_text(stable.dt) +
-                            " s (smallest cell over the P-wave speed of material \"" +
-                            stable.material + "\")");
+  // The explicit step is stable only below a fraction of the time a P wave
+  // takes to cross the smallest cell (engine/stable_time_step.hpp).
+  const Scheme& scheme = scheme_named(c.scheme);
+  const StableStep stable = stable_time_step(c.system, scheme);
+  const std::string limit = readable_text(stable.factor) + " h/c = " + readable_text(stable.dt()) + " s for " +
+                            scheme.label + " with " + c.system.shape_function + " shape functions at " +
+                            readable_text(stable.particles_per_cell) + " particles per cell (h/c = " +
+                            readable_text(stable.crossing) +
+                            " s: smallest cell over the P-wave speed of material \"" + stable.material + "\")";
+  TableReader analysis = t.table("analysis");
+  if (c.dt_auto) {
+    if (!analysis.has("cfl")) c.cfl = std::min(0.5, 0.8 * stable.factor);
+    analysis.require(c.cfl <= stable.factor, "cfl", "a CFL number no larger than the stable limit " + limit);
+    c.dt = c.cfl * stable.crossing;  // the first step's, particles at rest
   }
+  c.system.dt = c.dt;
+  if (c.dt > stable.dt()) analysis.fail("dt", "a time step no larger than the stable limit " + limit);
   // The viscous damping's share of the update, v (1 - c dt), must not
   // reverse the velocity.
   if (c.system.damping) {

@@ -16,7 +16,7 @@ namespace flowmpm {
 struct OutputSpec {
   std::filesystem::path directory;
   std::int64_t every = 0;           // steps between output steps (0: about 20 over the run)
-  std::vector<std::string> fields;  // names of output_fields to write
+  std::vector<std::string> fields;  // names of output fields to write (engine/snapshot.hpp)
 };
 
 struct Case {

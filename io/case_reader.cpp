@@ -12,7 +12,10 @@ namespace {
 std::string describe(const toml::node& node) {
   switch (node.type()) {
     case toml::node_type::table: return "a table";
-    case toml::node_type::array: return "an array";
+    case toml::node_type::array: {
+      const std::size_t n = node.as_array()->size();
+      return "an array of " + std::to_string(n) + (n == 1 ? " item" : " items");
+    }
     case toml::node_type::string: return "the string \"" + std::string(*node.value<std::string>()) + "\"";
     case toml::node_type::integer: return "the integer " + std::to_string(*node.value<std::int64_t>());
     case toml::node_type::floating_point: {

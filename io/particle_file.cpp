@@ -223,7 +223,7 @@ ParticleList read_h5(const std::filesystem::path& path, int dimension) {
   const auto axes = read_dataset(h5.get(), file, "material_axes", axes_columns, n, false,
                                  "an n x " + std::to_string(axes_columns) + " array of angles in degrees");
   if (!axes.empty() && dimension == 1) throw CaseError(file + ": dataset \"material_axes\": no material axes in 1D");
-  const auto stress = read_dataset(h5.get(), file, "stress", 6, n, false, "an n x 6 array of stresses in Pa");
+  const auto stress = read_dataset(h5.get(), file, "stress", 6, n, false, "an n x 6 array of stresses in Pa (xx, yy, zz, xy, yz, xz)");
   ParticleList list;
   list.source = file;
   for (std::size_t p = 0; p < n; ++p) {
@@ -238,7 +238,7 @@ ParticleList read_h5(const std::filesystem::path& path, int dimension) {
     }
     if (!stress.empty()) {
       Voigt s{};
-      for (int k = 0; k < 6; ++k) s[k] = stress[p * 6 + k];
+      for (int k = 0; k < 6; ++k) s[voigt_slot_of_listed[k]] = stress[p * 6 + k];
       list.stress.push_back(s);
     }
   }

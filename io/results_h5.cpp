@@ -58,18 +58,26 @@ void write_scalar_attribute(hid_t object, const char* name, hid_t file_type, hid
   if (!attribute.valid() || H5Awrite(attribute.get(), memory_type, &value) < 0) fail(file, what);
 }
 
-void write_units(hid_t dataset, const char* units, const std::string& file,
-                 const std::string& where) {
-  const std::string what = "cannot write attribute " + where + "@units";
+// A variable-length UTF-8 string attribute (h5py reads it as str), or an
+// array of them.
+void write_string_attribute(hid_t object, const char* name, const std::vector<std::string>& values, bool array,
+                            const std::string& file, const std::string& where) {
+  const std::string what = "cannot write attribute " + where + "@" + name;
   Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
-  if (!type.valid() || H5Tset_size(type.get(), std::strlen(units) + 1) < 0 ||
-      H5Tset_strpad(type.get(), H5T_STR_NULLTERM) < 0)
+  if (!type.valid() || H5Tset_size(type.get(), H5T_VARIABLE) < 0 || H5Tset_cset(type.get(), H5T_CSET_UTF8) < 0)
     fail(file, what);
-  Handle space(H5Screate(H5S_SCALAR), H5Sclose);
+  const hsize_t n = values.size();
+  Handle space(array ? H5Screate_simple(1, &n, nullptr) : H5Screate(H5S_SCALAR), H5Sclose);
   if (!space.valid()) fail(file, what);
-  Handle attribute(H5Acreate2(dataset, "units", type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
-                   H5Aclose);
-  if (!attribute.valid() || H5Awrite(attribute.get(), type.get(), units) < 0) fail(file, what);
+  std::vector<const char*> pointers;
+  for (const std::string& v : values) pointers.push_back(v.c_str());
+  Handle attribute(H5Acreate2(object, name, type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+  if (!attribute.valid() || H5Awrite(attribute.get(), type.get(), pointers.data()) < 0) fail(file, what);
+}
+
+void write_string_attribute(hid_t object, const char* name, const std::string& value, const std::string& file,
+                            const std::string& where) {
+  write_string_attribute(object, name, std::vector<std::string>{value}, false, file, where);
 }
 
 // One dataset of count x components values (1D when components == 1).
@@ -98,20 +106,37 @@ std::uintmax_t write_field(hid_t group, const std::string& group_name, std::size
   if (count > 0 &&
       H5Dwrite(dataset.get(), field.memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, field.data) < 0)
     fail(file, "cannot write dataset " + where);
-  if (field.units != nullptr) write_units(dataset.get(), field.units, file, where);
+  if (field.units != nullptr) write_string_attribute(dataset.get(), "units", field.units, file, where);
+  if (field.components == 6)
+    write_string_attribute(dataset.get(), "components", tensor_output_components, file, where);
   return static_cast<std::uintmax_t>(field.size) * field.value_bytes;
 }
 
 }  // namespace
 
-ResultsH5::ResultsH5(const std::filesystem::path& path) : file_(H5I_INVALID_HID), path_(path.string()) {
+ResultsH5::ResultsH5(const std::filesystem::path& path, const ResultsMetadata& m)
+    : file_(H5I_INVALID_HID), path_(path.string()) {
   // Errors are reported by exceptions; HDF5 must not print its own stack.
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   Handle file(H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
   if (!file.valid()) fail(path_, "cannot create file");
-  Handle steps(H5Gcreate2(file.get(), "/steps", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
-  if (!steps.valid() || H5Fflush(file.get(), H5F_SCOPE_GLOBAL) < 0)
-    fail(path_, "cannot create group /steps");
+  const hid_t root = file.get();
+  write_scalar_attribute(root, "format_version", H5T_STD_I32LE, H5T_NATIVE_INT, format_version, path_, "/");
+  write_string_attribute(root, "program", "flowmpm " + m.program_version, path_, "/");
+  write_string_attribute(root, "commit", m.commit, path_, "/");
+  write_string_attribute(root, "case", m.case_name, path_, "/");
+  write_string_attribute(root, "case_file", m.case_file, path_, "/");
+  write_scalar_attribute(root, "dimension", H5T_STD_I32LE, H5T_NATIVE_INT, m.dimension, path_, "/");
+  write_string_attribute(root, "stress_state", m.stress_state, path_, "/");
+  write_string_attribute(root, "scheme", m.scheme, path_, "/");
+  write_string_attribute(root, "shape_function", m.shape_function, path_, "/");
+  write_string_attribute(root, "units", "SI: m, s, kg, Pa, J", path_, "/");
+  write_string_attribute(root, "tensor_components", tensor_output_components, path_, "/");
+  write_string_attribute(root, "vector_components", "x y z (padded with 0 below 3D)", path_, "/");
+  write_string_attribute(root, "rows", "particle id: row i is the same particle at every step", path_, "/");
+  write_string_attribute(root, "materials", m.materials, true, path_, "/");
+  Handle steps(H5Gcreate2(root, "/steps", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+  if (!steps.valid() || H5Fflush(root, H5F_SCOPE_GLOBAL) < 0) fail(path_, "cannot create group /steps");
   file_ = file.release();
 }
 
@@ -147,15 +172,29 @@ void ResultsH5::write(const ParticleSnapshot& snapshot) {
   if (!written_.empty() && !std::ranges::equal(layout, fields_, same))
     throw std::invalid_argument("HDF5 file " + path_ + ": " + name + " has other fields than the earlier steps");
 
+  if (!written_.empty() && snapshot.count > index_length_)
+    throw std::invalid_argument("HDF5 file " + path_ + ": " + name + " has more particles than the first step");
+
+  // The connectivity 0..n-1, once: every step's topology reads its first n.
+  std::uintmax_t bytes = 0;
+  if (written_.empty()) {
+    std::vector<std::int32_t> index(snapshot.count);
+    for (std::size_t i = 0; i < index.size(); ++i) index[i] = static_cast<std::int32_t>(i);
+    Handle root(H5Gopen2(file_, "/", H5P_DEFAULT), H5Gclose);
+    bytes += write_field(root.get(), "", snapshot.count,
+                         Field{particle_index + 1, index.data(), index.size(), 1, H5T_STD_I32LE, H5T_NATIVE_INT32,
+                               sizeof(std::int32_t), nullptr},
+                         path_);
+    index_length_ = snapshot.count;
+  }
+
   Handle group(H5Gcreate2(file_, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
   if (!group.valid()) fail(path_, "cannot create group " + name);
-  write_scalar_attribute(group.get(), "time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, snapshot.time,
-                         path_, name);
-  write_scalar_attribute(group.get(), "step", H5T_STD_I64LE, H5T_NATIVE_INT64, snapshot.step,
-                         path_, name);
-  std::uintmax_t bytes = 0;
-  for (const Field& field : fields)
-    bytes += write_field(group.get(), name, snapshot.count, field, path_);
+  write_scalar_attribute(group.get(), "time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, snapshot.time, path_, name);
+  write_scalar_attribute(group.get(), "step", H5T_STD_I64LE, H5T_NATIVE_INT64, snapshot.step, path_, name);
+  for (const Field& field : fields) bytes += write_field(group.get(), name, snapshot.count, field, path_);
+  // Complete only now: written last, then flushed.
+  write_scalar_attribute(group.get(), "complete", H5T_STD_I32LE, H5T_NATIVE_INT, 1, path_, name);
   if (H5Fflush(file_, H5F_SCOPE_GLOBAL) < 0) fail(path_, "cannot flush after " + name);
   written_.push_back({snapshot.step, snapshot.time, snapshot.count});
   fields_ = std::move(layout);

@@ -1,6 +1,7 @@
 #include "io/xdmf.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <stdexcept>
 #include <string_view>
 
@@ -34,9 +35,10 @@ std::string data_item(const std::string& h5_path, const std::string& dimensions,
 }
 
 // XDMF's attribute type for a field of `components` per particle. Tensors
-// are "Matrix": the six values as stored, in our Voigt order. XDMF's
-// "Tensor6" means xx xy xz yy yz zz, and ParaView's legacy reader builds a
-// wrong 3 x 3 tensor from our order (checked with pvpython).
+// are "Matrix": the six values as stored, xx yy zz xy yz xz, which is the
+// order under which ParaView labels a 6-component array (XX YY ZZ XY YZ XZ)
+// in both its readers. "Tensor6" would not do: the legacy reader expands it
+// to 9 components numbered 0-8 (checked with pvpython; tests/pv_check.py).
 const char* attribute_type(int components) {
   return components == 1 ? "Scalar" : components == 3 ? "Vector" : "Matrix";
 }
@@ -64,8 +66,18 @@ std::string xdmf_document(const std::string& h5_name, const ResultsH5& results) 
     out += "      <Grid Name=\"step_" + group.substr(group.rfind('/') + 1) +
            "\" GridType=\"Uniform\">\n";
     out += "        <Time Value=\"" + exact_text(step.time) + "\"/>\n";
+    // One vertex per particle. ParaView's default (Xdmf3) reader makes cells
+    // only from a connectivity array: the first `count` entries of the
+    // shared /particle_index, through a HyperSlab (start 0, stride 1).
     out += "        <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" + count +
-           "\" NodesPerElement=\"1\"/>\n";
+           "\" NodesPerElement=\"1\">\n";
+    out += "          <DataItem ItemType=\"HyperSlab\" Dimensions=\"" + count + "\">\n";
+    out += "            <DataItem Dimensions=\"3 1\" Format=\"XML\">0 1 " + count + "</DataItem>\n";
+    out += "            " +
+           data_item(file + ":" + ResultsH5::particle_index, std::to_string(results.index_length()), "Int", 4) +
+           "\n";
+    out += "          </DataItem>\n";
+    out += "        </Topology>\n";
     out += "        <Geometry GeometryType=\"XYZ\">\n";
     out += "          " + data_item(file + ":" + group + "/position", dimensions(3), "Float", 8) +
            "\n";
@@ -92,6 +104,31 @@ std::string xdmf_document(const std::string& h5_name, const ResultsH5& results) 
 void write_xdmf(const std::filesystem::path& path, const std::string& h5_name,
                 const ResultsH5& results) {
   write_file_atomically(path, xdmf_document(h5_name, results));
+}
+
+namespace {
+double steady_seconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+}  // namespace
+
+XdmfIndex::XdmfIndex(std::filesystem::path path, std::string h5_name, double interval_seconds)
+    : path_(std::move(path)), h5_name_(std::move(h5_name)), interval_(interval_seconds) {}
+
+void XdmfIndex::update(const ResultsH5& results) {
+  const std::size_t steps = results.written().size();
+  if (steps >= 2 * indexed_ || steady_seconds() - last_rewrite_ >= interval_) rewrite(results);
+}
+
+void XdmfIndex::finish(const ResultsH5& results) {
+  if (results.written().size() != indexed_) rewrite(results);
+}
+
+void XdmfIndex::rewrite(const ResultsH5& results) {
+  write_xdmf(path_, h5_name_, results);
+  indexed_ = results.written().size();
+  last_rewrite_ = steady_seconds();
+  ++rewrites_;
 }
 
 }  // namespace flowmpm

@@ -10,6 +10,7 @@
 //                                                    // recoverable energy per unit volume (J/m^3)
 //   double density() const;                          // kg/m^3
 //   double wave_speed() const;                       // fastest wave, m/s (stable dt)
+// and optionally named state variables for output (materials/state_variable.hpp).
 // `update` is pure apart from its outputs: stress, state, and for reduced
 // stress states the out-of-plane strain components of deps. The engine
 // dispatches on this variant once per particle batch, never per particle.

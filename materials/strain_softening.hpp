@@ -29,6 +29,7 @@
 // eps_yy = eps_zz = -nu eps_xx (sigma_yy = sigma_zz = 0 for any omega < 1).
 #pragma once
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 
@@ -36,6 +37,7 @@
 #include "materials/material_input.hpp"
 #include "materials/rotation.hpp"
 #include "materials/lame.hpp"
+#include "materials/state_variable.hpp"
 #include "materials/stress_state.hpp"
 
 namespace flowmpm {
@@ -72,6 +74,13 @@ struct StrainSoftening {
 
   // Reads and validates [materials.NAME] (type = "strain_softening").
   static StrainSoftening read(ParameterTable& table);
+
+  // Damage omega (-) and the energy dissipated per unit volume (J/m^3).
+  static constexpr std::array<StateVariable, 2> state_variables{{{"damage", "-"}, {"dissipated_energy", "J/m^3"}}};
+  void state_values(const State& s, double* out) const {
+    out[0] = damage(s.kappa, s.eps_f);
+    out[1] = s.dissipated;
+  }
 
   // eps_f in a band of width init.cell_length; throws CaseError if the crack
   // band would snap back (eps_f <= eps_i).

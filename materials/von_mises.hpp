@@ -28,12 +28,14 @@
 // The stress turns with the material (rotation.hpp, Hughes-Winget), so a
 // rigid rotation rotates it and does not load it.
 #pragma once
+#include <array>
 #include <cmath>
 
 #include "core/voigt.hpp"
 #include "materials/material_input.hpp"
 #include "materials/rotation.hpp"
 #include "materials/lame.hpp"
+#include "materials/state_variable.hpp"
 #include "materials/stress_state.hpp"
 
 namespace flowmpm {
@@ -60,6 +62,9 @@ struct VonMises {
     double eps_p = 0.0;  // equivalent plastic strain, integral of sqrt(2/3 d eps_p : d eps_p)
   };
   State initial_state(const ParticleInit&) const { return {}; }
+
+  static constexpr std::array<StateVariable, 1> state_variables{{{"plastic_strain", "-"}}};
+  void state_values(const State& s, double* out) const { out[0] = s.eps_p; }
 
   Parameters parameters;
   double lambda = 0.0, mu = 0.0, K = 0.0;

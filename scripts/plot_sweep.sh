@@ -2,11 +2,13 @@
 # Plots an error norm of a sweep against the wall time of its cases:
 #   scripts/plot_sweep.sh SWEEP_DIR ERROR_COLUMN [GROUP_COLUMN ...]
 # reads SWEEP_DIR/sweep.csv (written by `flowmpm sweep`) and draws, log-log,
-# ERROR_COLUMN against wall_seconds with one line (points joined in order of
-# wall time) per distinct combination of the GROUP_COLUMNs, into
-# SWEEP_DIR/speed_vs_error.png. Only completed cases with a positive error
-# and wall time are drawn. Needs gnuplot (Debian package gnuplot-nox) and
-# python3, both installed by scripts/setup.sh.
+# ERROR_COLUMN against wall_seconds with one line per distinct combination of
+# the GROUP_COLUMNs, its points joined in case order (the order of the
+# varied keys, e.g. increasing resolution, not of the noisy wall time), into
+# SWEEP_DIR/speed_vs_error.png. Lines differ by colour, dash and point
+# type. Only completed cases with a positive error and wall time are drawn.
+# Needs gnuplot (Debian package gnuplot-nox) and python3, both installed by
+# scripts/setup.sh.
 set -euo pipefail
 
 if (($# < 2)); then
@@ -48,7 +50,7 @@ for row in rows:
     if row["status"] != "completed" or x is None or y is None:
         left_out += 1
         continue
-    lines.setdefault(tuple(row[g] for g in groups), []).append((x, y))
+    lines.setdefault(tuple(row[g] for g in groups), []).append((int(row["case"]), x, y))
 if left_out:
     print(f"plot_sweep: {left_out} of {len(rows)} rows left out (failed, or no positive {error} "
           "and wall_seconds)", file=sys.stderr)
@@ -62,15 +64,18 @@ def quoted(text):  # a gnuplot single-quoted string
 out = [f"set terminal {terminal} size 1000,{600 + 20 * len(lines)}", f"set output {quoted(png)}", "set termoption noenhanced",
        "set logscale xy", "set format x '%g'", "set format y '%g'", "set grid",
        "set key below",
-       "set xlabel 'wall time of the step loop (s)'", f"set ylabel {quoted(error)}",
-       f"set title {quoted(error + ' against wall time: ' + csv_file)}"]
+       "set xlabel 'wall time of the step loop (s)'",
+       f"set ylabel {quoted('relative RMS error: ' + error + ' (sweep.csv column)')}",
+       f"set title {quoted(error + ' error against wall time: ' + csv_file)}"]
 plots = []
 for i, (key, points) in enumerate(lines.items()):
     out.append(f"$line{i} << EOD")
-    out += [f"{x!r} {y!r}" for x, y in sorted(points)]
+    out += [f"{x!r} {y!r}" for _, x, y in sorted(points)]
     out.append("EOD")
     title = ", ".join(f"{g}={v}" for g, v in zip(groups, key)) or error
-    plots.append(f"$line{i} using 1:2 with linespoints linewidth 2 pointsize 1.2 title {quoted(title)}")
+    # 8 colours, then dashed, so that every line differs from every other.
+    style = f"linecolor {i % 8 + 1} dashtype {i // 8 + 1} pointtype {i % 13 + 1}"
+    plots.append(f"$line{i} using 1:2 with linespoints {style} linewidth 2 pointsize 1.2 title {quoted(title)}")
 out.append("plot " + ", \\\n     ".join(plots))
 print("\n".join(out))
 EOF

@@ -4,7 +4,8 @@
 # table of results at t = 0.1 s against the analytical solution.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/setup.sh >/dev/null
+scripts/setup.sh
+echo "running the three cases (logs in results/uniaxial_case1_*/run.log)"
 for scheme in usf usl musl; do
   build/flowmpm run "configs/uniaxial_stress/case1_${scheme}.toml" --quiet
 done

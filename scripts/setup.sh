@@ -1,24 +1,51 @@
 #!/usr/bin/env bash
-# Installs the Debian packages flowmpm needs (only those missing; quiet when
-# all are present) and builds it in build/ (Release).
+# Sets up flowmpm on a Debian machine: installs the Debian packages that are
+# missing and builds in build/ (Release).
+#   scripts/setup.sh           the program only (build/flowmpm)
+#   scripts/setup.sh --tests   also what the test suite needs (ParaView's
+#                              pvpython, h5py, OpenMPI), and builds everything
+# Prints one line per stage and the build's progress; the package manager's
+# own output is kept in build/setup-apt.log.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-packages=(python3 cmake g++ make libtbb-dev libeigen3-dev libhdf5-dev hdf5-tools libspdlog-dev
+packages=(python3 cmake g++ make git libtbb-dev libeigen3-dev libhdf5-dev hdf5-tools libspdlog-dev
           doctest-dev libtomlplusplus-dev libcli11-dev gnuplot-nox)
+target=(--target flowmpm)
+if [[ ${1:-} == --tests ]]; then
+  packages+=(python3-h5py python3-paraview libopenmpi-dev openmpi-bin)
+  target=()
+elif [[ $# -gt 0 ]]; then
+  echo "usage: $0 [--tests]" >&2
+  exit 1
+fi
+
 missing=()
 for p in "${packages[@]}"; do
   if [[ $p == python3 ]] && command -v python3 >/dev/null; then continue; fi
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
+mkdir -p build
 if ((${#missing[@]})); then
-  echo "setup: installing ${missing[*]}"
+  echo "setup: installing ${#missing[@]} Debian package(s): ${missing[*]} (log: build/setup-apt.log)"
   sudo_cmd=()
   [[ $(id -u) -ne 0 ]] && sudo_cmd=(sudo)
   export DEBIAN_FRONTEND=noninteractive
-  "${sudo_cmd[@]}" apt-get update -qq
-  "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+  "${sudo_cmd[@]}" apt-get update -qq >build/setup-apt.log 2>&1
+  "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >>build/setup-apt.log 2>&1 || {
+    echo "setup: apt-get failed; the last lines of build/setup-apt.log:" >&2
+    tail -20 build/setup-apt.log >&2
+    exit 1
+  }
+  echo "setup: packages installed"
+else
+  echo "setup: all ${#packages[@]} Debian packages present"
 fi
 
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build -j"$(nproc)"
+echo "setup: configuring build/ (Release)"
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >build/setup-cmake.log 2>&1 || {
+  cat build/setup-cmake.log >&2
+  exit 1
+}
+echo "setup: building ${target[*]:-everything} with $(nproc) jobs"
+cmake --build build -j"$(nproc)" "${target[@]}"

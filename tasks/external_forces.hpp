@@ -56,10 +56,10 @@ void add_external_forces(DiscreteSystem<D, Shape>& system) {
       const Stencil<D, Shape, false> s(grid, x, b.half_width);
       double carried = 0.0;
       for (int a = 0; a < s.size; ++a)
-        if (grid.mass[s.node(a)] > system.mass_threshold) carried += s.N(a);
+        if (grid.mass[s.node(a)] > 0.0) carried += s.N(a);
       if (carried <= 0.0) continue;
       for (int a = 0; a < s.size; ++a) {
-        if (grid.mass[s.node(a)] <= system.mass_threshold) continue;
+        if (grid.mass[s.node(a)] <= 0.0) continue;
         for (int d = 0; d < D; ++d) grid.force[d][s.node(a)] += s.N(a) / carried * force[d];
       }
     }

@@ -1,10 +1,10 @@
-// Grid stages (README "How a step runs"). grid_velocity: v_I = p_I / m_I where m_I is above
-// the mass threshold, then the prescribed velocities (p_I follows).
+// Grid stages (README "How a step runs"). grid_velocity: v_I = p_I / m_I
+// (0 on empty nodes), then the prescribed velocities (p_I follows).
 // grid_integrate: the external forces added (tasks/external_forces.hpp),
 // p_I += (f_I + f_d) dt with f_d the damping force if the scene has damping,
-// v_I^new = p_I / m_I, prescribed velocities at t + dt, and
-// dv_I = v_I^new - v_I for the FLIP update; v_I becomes v_I^new so that the
-// stages after it read the updated velocity.
+// v_I^new = p_I / m_I (but see held_node), prescribed velocities at t + dt, dv_I = v_I^new - v_I for the FLIP update,
+// and the constraints' reactions; v_I becomes v_I^new so that the stages
+// after it read the updated velocity.
 #pragma once
 #include <cmath>
 #include <vector>
@@ -51,50 +51,100 @@ void fold_mirror_planes(DiscreteSystem<D, Shape>& system, typename Grid<D>::Vect
   }
 }
 
+// The reaction of each constraint over the step: the impulse the body's
+// particles receive at a node beyond its own forces, m_I dv_I - f_I dt
+// (the particles' momentum changes by sum_I m_I dv_I in the FLIP update and
+// by sum_I f_I dt where nothing is prescribed), summed over the set's nodes
+// and divided by dt; = -sum_I f_I for a fixed support. Where the set is a
+// mirror plane, its ghost nodes and the mirror nodes count too, with the
+// mass and force the body's particles put there (the folded image's share
+// taken off), so that the reactions of all sets add up to the total external
+// force of the supports. A node in two sets counts in both; at a corner of
+// two mirror planes the image shares are approximate. Serial over the
+// constrained nodes, in their order: deterministic.
+template <int D, class Shape>
+void measure_reactions(DiscreteSystem<D, Shape>& system) {
+  const auto& grid = system.grid;
+  const double dt = system.dt;
+  for (NodeConstraint& c : system.constraints) {
+    const int a = c.axis;
+    const auto impulse = [&](std::size_t n, double mass, double force) {
+      return mass * grid.velocity_change[a][n] - force * dt;
+    };
+    double J = 0.0;
+    for (std::size_t n : c.nodes) J += impulse(n, grid.mass[n], grid.force[a][n]);
+    if (c.mirror_plane >= 0) {
+      // Along a constrained axis the fold is antisymmetric: f_mirror += -f_ghost.
+      for (auto [ghost, mirror] : system.mirror_planes[c.mirror_plane].pairs) {
+        J += impulse(ghost, grid.mass[ghost], grid.force[a][ghost]);
+        J += impulse(mirror, grid.mass[mirror] - grid.mass[ghost], grid.force[a][mirror] + grid.force[a][ghost]);
+      }
+    }
+    c.reaction = J / dt;
+  }
+}
+
 template <int D, class Shape>
 void grid_velocity(DiscreteSystem<D, Shape>& system) {
   auto& grid = system.grid;
-  const double threshold = system.mass_threshold;
   fold_mirror_planes(system, grid.momentum, true);
   for_each_active_node(grid, [&](std::size_t n, const Index<D>&) {
-    const bool massive = grid.mass[n] > threshold;
-    for (int d = 0; d < D; ++d) grid.velocity[d][n] = massive ? grid.momentum[d][n] / grid.mass[n] : 0.0;
+    // p / m is a mean of particle velocities, however light the node: a node
+    // left at v = 0 would strain a rigidly moving body, (0 - v) dN dt.
+    const double m = grid.mass[n];
+    for (int d = 0; d < D; ++d) grid.velocity[d][n] = m > 0.0 ? grid.momentum[d][n] / m : 0.0;
   });
   apply_velocity_constraints(system, system.t);
+}
+
+// A node too light for its stiffness: its own frequency sqrt(k_I / m_I),
+// k_I = sum_p V_p M_p |grad N_Ip|^2 (M the P-wave modulus), exceeds 1 / dt.
+// Only linear shape functions make such nodes: where a particle's weight
+// N_Ip on a node vanishes, its gradient does not (at the material's moving
+// edge), and v_I + f_I dt / m_I would throw the stress update (USL) and the
+// positions off by (c dt / h)^2 / N_Ip times the strain in one step
+// (docs/STABILITY.md). Such a node hands the stress and position updates its
+// start-of-step velocity, as USF and MUSL do at every node, while FLIP still
+// gives its particles the whole increment f_I dt / m_I (N_Ip f_I dt / m_I
+// is bounded), so that momentum is kept.
+template <int D, class Shape>
+bool held_node(const Grid<D>& grid, std::size_t n, double dt) {
+  if constexpr (Shape::gradient_jumps) return grid.mass[n] > 0.0 && grid.stiffness[n] * dt * dt > grid.mass[n];
+  return false;
 }
 
 // p_I += (f_I + f_d) dt with the damping force (Damping), along each axis
 // the node is free along:
 //   f_d = -alpha |f_I| sign(v_I) - c m_I v_I,
-// v_I the velocity before the update. Its power f_d (v_I + v_I^new) / 2 is
-// summed per slab of nodes and then over the slabs in order, so the sum
-// does not depend on the thread count.
+// v_I the velocity before the update. Its power f_d (v_I + v_I^new) / 2,
+// v_I^new = p_I / m_I (a held node's too), is the damping's share of the
+// grid's kinetic energy change; it is summed per slab of nodes and then over
+// the slabs in order, so the sum does not depend on the thread count.
 template <int D, class Shape>
 void integrate_damped(DiscreteSystem<D, Shape>& system) {
   auto& grid = system.grid;
   const Damping& damping = *system.damping;
-  const double threshold = system.mass_threshold, dt = system.dt;
+  const double dt = system.dt;
   const double alpha = damping.local(system.t), c = damping.viscous(system.t);
   const int first_slab = grid.active_lo[D - 1];
   std::vector<double> slab_power(static_cast<std::size_t>(grid.active_hi[D - 1] - first_slab + 1), 0.0);
   for_each_active_node(grid, [&](std::size_t n, const Index<D>& ijk) {
-    const bool massive = grid.mass[n] > threshold;
+    const double m = grid.mass[n];
+    const bool held = held_node<D, Shape>(grid, n, dt);
     double power = 0.0;
     for (int d = 0; d < D; ++d) {
       const double v = grid.velocity[d][n];
       grid.velocity_change[d][n] = v;  // v_I before the update
-      if (!massive) {
-        grid.velocity[d][n] = 0.0;
-        continue;
-      }
+      if (m <= 0.0) continue;
       double f = grid.force[d][n], f_d = 0.0;
       if (!((damping.undamped[n] >> d) & 1u)) {
-        f_d = -alpha * std::abs(f) * static_cast<double>((v > 0.0) - (v < 0.0)) - c * grid.mass[n] * v;
+        f_d = -alpha * std::abs(f) * static_cast<double>((v > 0.0) - (v < 0.0)) - c * m * v;
         f += f_d;
       }
       grid.momentum[d][n] += f * dt;
-      grid.velocity[d][n] = grid.momentum[d][n] / grid.mass[n];
-      power += f_d * 0.5 * (v + grid.velocity[d][n]);
+      const double v_new = grid.momentum[d][n] / m;
+      if (!held) grid.velocity[d][n] = v_new;
+      power += f_d * 0.5 * (v + v_new);
     }
     slab_power[static_cast<std::size_t>(ijk[D - 1] - first_slab)] += power;
   });
@@ -106,29 +156,34 @@ void integrate_damped(DiscreteSystem<D, Shape>& system) {
 template <int D, class Shape>
 void grid_integrate(DiscreteSystem<D, Shape>& system) {
   auto& grid = system.grid;
-  const double threshold = system.mass_threshold, dt = system.dt;
+  const double dt = system.dt;
   add_external_forces(system);
   fold_mirror_planes(system, grid.force, false);
   if (system.damping) {
     integrate_damped(system);
   } else {
     for_each_active_node(grid, [&](std::size_t n, const Index<D>&) {
-      const bool massive = grid.mass[n] > threshold;
+      const double m = grid.mass[n];
+      const bool held = held_node<D, Shape>(grid, n, dt);
       for (int d = 0; d < D; ++d) {
         grid.velocity_change[d][n] = grid.velocity[d][n];  // v_I before the update
-        if (massive) {
+        if (m > 0.0) {
           grid.momentum[d][n] += grid.force[d][n] * dt;
-          grid.velocity[d][n] = grid.momentum[d][n] / grid.mass[n];
-        } else {
-          grid.velocity[d][n] = 0.0;
+          if (!held) grid.velocity[d][n] = grid.momentum[d][n] / m;
         }
       }
     });
   }
   apply_velocity_constraints(system, system.t + dt);
+  // dv_I for FLIP; a held node's is that of its momentum.
   for_each_active_node(grid, [&](std::size_t n, const Index<D>&) {
-    for (int d = 0; d < D; ++d) grid.velocity_change[d][n] = grid.velocity[d][n] - grid.velocity_change[d][n];
+    const bool held = held_node<D, Shape>(grid, n, dt);
+    for (int d = 0; d < D; ++d) {
+      const double v_new = held ? grid.momentum[d][n] / grid.mass[n] : grid.velocity[d][n];
+      grid.velocity_change[d][n] = v_new - grid.velocity_change[d][n];
+    }
   });
+  measure_reactions(system);
 }
 
 }  // namespace flowmpm

@@ -3,7 +3,8 @@
 //   m_I = sum_p N_Ip m_p,  p_I = sum_p N_Ip m_p v_p,
 //   f_I = sum_p ( -V_p sigma_p . dN_Ip + N_Ip m_p g_p ),
 // g_p gravity plus the body force of the particle's body (loads, at the
-// start of the step).
+// start of the step), and with linear shape functions the nodal stiffness
+//   k_I = sum_p V_p M_p |dN_Ip|^2  (M the P-wave modulus; tasks/grid_update.hpp held_node).
 // In 1D and 2D only the in-plane block of sigma enters the force.
 // USL and MUSL map both from the same particle state, in one pass.
 #pragma once
@@ -29,6 +30,8 @@ void set_accelerations(DiscreteSystem<D, Shape>& system) {
 // whichever is mapped, so the results do not depend on the grouping.
 template <int D, class Shape, bool Momentum, bool Force>
 void p2g(DiscreteSystem<D, Shape>& system) {
+  // The nodal stiffness of held_node (tasks/grid_update.hpp), with the force.
+  constexpr bool Stiffness = Force && Shape::gradient_jumps;
   auto& grid = system.grid;
   for_each_active_node(grid, [&](std::size_t n, const Index<D>&) {
     if constexpr (Momentum) grid.mass[n] = 0.0;
@@ -36,8 +39,14 @@ void p2g(DiscreteSystem<D, Shape>& system) {
       if constexpr (Momentum) grid.momentum[d][n] = 0.0;
       if constexpr (Force) grid.force[d][n] = 0.0;
     }
+    if constexpr (Stiffness) grid.stiffness[n] = 0.0;
   });
   if constexpr (Force) set_accelerations(system);
+  // P-wave modulus rho c^2 of each material, for the nodal stiffness.
+  std::vector<double> modulus;
+  if constexpr (Stiffness)
+    for (const Material& m : system.materials) modulus.push_back(density(m) * wave_speed(m) * wave_speed(m));
+  double* stiffness = grid.stiffness.data();
   double* mass = grid.mass.data();
   double* momentum[D];
   double* force[D];
@@ -57,6 +66,8 @@ void p2g(DiscreteSystem<D, Shape>& system) {
         for (int i = 0; i < D; ++i)
           for (int j = 0; j < D; ++j) Vsigma[i][j] = b.volume[p] * sigma[voigt_slot(i, j)];
       }
+      [[maybe_unused]] double VM = 0.0;
+      if constexpr (Stiffness) VM = b.volume[p] * modulus[b.material];
       s.for_each_node_pair([&]<int Count>(int line, int k, std::size_t n) {
         const auto w = s.template pair_weights<Count>(line, k);
         const NodePair N = w.N;
@@ -70,6 +81,11 @@ void p2g(DiscreteSystem<D, Shape>& system) {
             NodePair f = N * mg[i];
             for (int j = 0; j < D; ++j) f -= Vsigma[i][j] * w.dN[j];
             store_nodes<Count>(force[i] + n, load_nodes<Count>(force[i] + n) + f);
+          }
+          if constexpr (Stiffness) {
+            NodePair dN2 = w.dN[0] * w.dN[0];
+            for (int j = 1; j < D; ++j) dN2 += w.dN[j] * w.dN[j];
+            store_nodes<Count>(stiffness + n, load_nodes<Count>(stiffness + n) + VM * dN2);
           }
         }
       });

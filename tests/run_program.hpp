@@ -16,6 +16,8 @@
 #include <string>
 #include <vector>
 
+extern char** environ;  // the environment start_program passes on
+
 namespace flowmpm::testing {
 
 // A fresh directory, removed with everything in it at the end of the test.
@@ -41,29 +43,37 @@ struct Result {
   std::string output;  // stdout and stderr together
 };
 
-// Runs the flowmpm binary with `args` in the working directory `cwd`.
-inline Result run_flowmpm(const std::vector<std::string>& args, const std::filesystem::path& cwd) {
+// A program started by start_program, still running.
+struct Running {
+  pid_t pid = -1;
+  int output = -1;  // read end of its stdout and stderr
+};
+
+// Starts `argv` (argv[0] a path) in the working directory `cwd`, with
+// `environment` ("NAME=value") added to ours; stdout and stderr go to a pipe.
+inline Running start_program(const std::vector<std::string>& argv, const std::filesystem::path& cwd,
+                             const std::vector<std::string>& environment = {}) {
   // Everything the child needs is prepared before fork().
-  std::vector<std::string> storage;
-  storage.emplace_back(FLOWMPM_EXECUTABLE);
-  storage.insert(storage.end(), args.begin(), args.end());
-  std::vector<char*> argv;
-  for (std::string& s : storage) argv.push_back(s.data());
-  argv.push_back(nullptr);
+  std::vector<std::string> storage(argv), env_storage(environment);
+  std::vector<char*> args, env;
+  for (std::string& s : storage) args.push_back(s.data());
+  args.push_back(nullptr);
+  for (std::string& s : env_storage) env.push_back(s.data());
+  for (char** e = environ; *e; ++e) env.push_back(*e);
+  env.push_back(nullptr);
   const std::string dir = cwd.string();
 
-  Result result;
   int fds[2];
   if (::pipe(fds) != 0) {
     FAIL("pipe() failed");
-    return result;
+    return {};
   }
   const pid_t pid = ::fork();
   if (pid < 0) {
     ::close(fds[0]);
     ::close(fds[1]);
     FAIL("fork() failed");
-    return result;
+    return {};
   }
   if (pid == 0) {
     ::dup2(fds[1], STDOUT_FILENO);
@@ -71,22 +81,28 @@ inline Result run_flowmpm(const std::vector<std::string>& args, const std::files
     ::close(fds[0]);
     ::close(fds[1]);
     if (::chdir(dir.c_str()) != 0) ::_exit(126);
-    ::execv(argv[0], argv.data());
+    ::execve(args[0], args.data(), env.data());
     ::_exit(127);
   }
   ::close(fds[1]);
+  return {pid, fds[0]};
+}
+
+// Reads the program's output until it closes it, and waits for it to end.
+inline Result wait_for(const Running& program) {
+  Result result;
   char buffer[4096];
   for (;;) {
-    const ssize_t n = ::read(fds[0], buffer, sizeof buffer);
+    const ssize_t n = ::read(program.output, buffer, sizeof buffer);
     if (n > 0) {
       result.output.append(buffer, static_cast<std::size_t>(n));
     } else if (n == 0 || errno != EINTR) {
       break;
     }
   }
-  ::close(fds[0]);
+  ::close(program.output);
   int status = 0;
-  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  while (::waitpid(program.pid, &status, 0) < 0 && errno == EINTR) {
   }
   if (WIFEXITED(status)) {
     result.status = WEXITSTATUS(status);
@@ -94,6 +110,14 @@ inline Result run_flowmpm(const std::vector<std::string>& args, const std::files
     result.status = 128 + WTERMSIG(status);
   }
   return result;
+}
+
+// Runs the flowmpm binary with `args` in the working directory `cwd`.
+inline Result run_flowmpm(const std::vector<std::string>& args, const std::filesystem::path& cwd,
+                          const std::vector<std::string>& environment = {}) {
+  std::vector<std::string> argv{FLOWMPM_EXECUTABLE};
+  argv.insert(argv.end(), args.begin(), args.end());
+  return wait_for(start_program(argv, cwd, environment));
 }
 
 inline std::string read_text(const std::filesystem::path& path) {

@@ -207,6 +207,18 @@ TEST_CASE("--set overrides are checked like the case file") {
     expect_rejected(dir, CaseText::valid().text(), -1, {"--set", "analysis.dt", "KEY=VALUE"},
                     {"--set", "analysis.dt"});
   }
+  SUBCASE("a key as messages name it, bodies[0].velocity, works in --set as bodies.0.velocity does") {
+    for (const char* key : {"bodies[0].velocity", "bodies.0.velocity"}) {
+      const Result r = run_flowmpm({"check", case_file.string(), "--set", std::string(key) + "=[0.5, 0.0, 0.0]"}, dir.path);
+      INFO(key << ": " << r.output);
+      CHECK(r.status == 0);
+    }
+  }
+  SUBCASE("an array of the wrong length: the message says how long it was") {
+    expect_rejected(dir, CaseText::valid().text(), -1,
+                    {"--set", "bodies[0].velocity", "an array of 3 numbers", "an array of 2 items"},
+                    {"--set", "bodies[0].velocity=[1.0, 2.0]"});
+  }
   SUBCASE("a bare string value is accepted") {
     const Result r = run_flowmpm({"check", case_file.string(), "--set", "analysis.scheme=musl"}, dir.path);
     INFO(r.output);

@@ -43,7 +43,7 @@ ParticleSnapshot run(const Case& c, int threads, bool serial, std::int64_t* sort
   auto sim = testing::simulation<D, Shape>(c);
   for (std::int64_t s = 0; s < c.steps; ++s) serial ? sim.advance_serial() : sim.advance();
   if (sorts) *sorts = sim.system().sorts;
-  return sim.snapshot(output_field_names());
+  return sim.snapshot(default_output_fields());
 }
 
 void check_identical(const ParticleSnapshot& a, const ParticleSnapshot& b) {

@@ -33,7 +33,7 @@ TEST_CASE("(b) a time step above the stable limit is rejected when the case is r
   // Bar: h = 1/32 m, c = 10 m/s, so the limit is h / c = 3.125e-3 s.
   CHECK_THROWS_WITH_AS(read_case(testing::config("verification/bar_vibration_small.toml"),
                                  {"analysis.dt=4e-3", "analysis.end_time=0.4"}),
-                       doctest::Contains("stable limit h/c = 0.003125 s"), CaseError);
+                       doctest::Contains("(h/c = 0.003125 s"), CaseError);
   CHECK_THROWS_AS(read_case(testing::config("verification/bar_vibration_small.toml"),
                             {"analysis.dt=\"auto\"", "analysis.cfl=1.5"}),
                   CaseError);

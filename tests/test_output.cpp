@@ -78,7 +78,10 @@ ParticleSnapshot make_snapshot(std::int64_t step, double time, std::size_t count
   s.step = step;
   s.time = time;
   s.count = count;
-  for (const OutputField& f : output_fields) s.fields.push_back({f, {}, {}});
+  for (const OutputField& f : builtin_output_fields) {
+    for (const char* name : {"position", "velocity", "stress", "strain", "volume", "mass", "material"})
+      if (std::string_view(f.name) == name) s.fields.push_back({f, {}, {}});
+  }
   for (std::size_t i = 0; i < count; ++i) {
     const double x = static_cast<double>(i) + static_cast<double>(step);
     for (int c = 0; c < 3; ++c) {
@@ -94,6 +97,11 @@ ParticleSnapshot make_snapshot(std::int64_t step, double time, std::size_t count
     field(s, "material").integer.push_back(static_cast<std::int32_t>(i % 3));
   }
   return s;
+}
+
+ResultsMetadata metadata() {
+  return {"0.1.0", "abc123", "test case", "cases/test.toml", 2, "plane strain", "USL", "bspline2",
+          {"steel", "rubber \"soft\""}};
 }
 
 // The snapshot without the fields named.
@@ -146,15 +154,19 @@ struct H5Reader {
     return value;
   }
 
+  // A scalar variable-length string attribute (what ResultsH5 writes).
   std::string string_attribute(const std::string& object, const char* name) const {
     const hid_t attr = H5Aopen_by_name(file, object.c_str(), name, H5P_DEFAULT, H5P_DEFAULT);
     REQUIRE(attr >= 0);
     const hid_t type = H5Aget_type(attr);
-    std::string value(H5Tget_size(type), '\0');
-    REQUIRE(H5Aread(attr, type, value.data()) >= 0);
+    REQUIRE(H5Tis_variable_str(type) > 0);
+    char* text = nullptr;
+    REQUIRE(H5Aread(attr, type, &text) >= 0);
+    const std::string value = text ? text : "";
+    H5free_memory(text);
     H5Tclose(type);
     H5Aclose(attr);
-    return value.substr(0, value.find('\0'));
+    return value;
   }
 };
 
@@ -163,18 +175,23 @@ struct H5Reader {
 TEST_CASE("ResultsH5 writes steps that read back exactly") {
   TempDir dir;
   const fs::path file = dir.path / "results.h5";
-  const ParticleSnapshot first = make_snapshot(0, 0.0, 4);
-  const ParticleSnapshot second = make_snapshot(1250, 0.1 + 1.0 / 3.0, 5);
+  const ParticleSnapshot first = make_snapshot(0, 0.0, 5);
+  const ParticleSnapshot second = make_snapshot(1250, 0.1 + 1.0 / 3.0, 4);
   {
-    ResultsH5 results(file);
+    ResultsH5 results(file, metadata());
     results.write(first);
     results.write(second);
     REQUIRE(results.written().size() == 2);
     CHECK(results.written()[1].step == 1250);
     CHECK(results.written()[1].time == second.time);
-    CHECK(results.written()[1].count == 5);
+    CHECK(results.written()[1].count == 4);
+    CHECK(results.index_length() == 5);
     const std::uintmax_t per_particle = (3 + 3 + 6 + 6 + 1 + 1) * sizeof(double) + 4;
-    CHECK(results.bytes_written() == (4 + 5) * per_particle);
+    // ... and the particle index, 4 bytes per particle of the first step, once.
+    CHECK(results.bytes_written() == (5 + 4) * per_particle + 5 * 4);
+    // More particles than the first step: refused, nothing written.
+    CHECK_THROWS_AS(results.write(make_snapshot(1300, 0.5, 6)), std::invalid_argument);
+    CHECK(results.written().size() == 2);
   }
 
   CHECK(ResultsH5::group_name(1250) == "/steps/00001250");
@@ -201,7 +218,24 @@ TEST_CASE("ResultsH5 writes steps that read back exactly") {
     CHECK(h5.string_attribute(group + "/strain", "units") == "-");
     CHECK(h5.string_attribute(group + "/volume", "units") == "m^3");
     CHECK(h5.string_attribute(group + "/mass", "units") == "kg");
+    // Tensors say their component order; the step says it is complete.
+    CHECK(h5.string_attribute(group + "/stress", "components") == "xx yy zz xy yz xz");
+    CHECK(h5.string_attribute(group + "/strain", "components") == "xx yy zz xy yz xz");
+    CHECK(h5.attribute<std::int32_t>(group, "complete", H5T_NATIVE_INT32) == 1);
   }
+  CHECK(h5.read<std::int32_t>("/particle_index", H5T_NATIVE_INT32, 5) == std::vector<std::int32_t>{0, 1, 2, 3, 4});
+  // The root group's metadata.
+  CHECK(h5.attribute<std::int32_t>("/", "format_version", H5T_NATIVE_INT32) == ResultsH5::format_version);
+  CHECK(h5.string_attribute("/", "program") == "flowmpm 0.1.0");
+  CHECK(h5.string_attribute("/", "commit") == "abc123");
+  CHECK(h5.string_attribute("/", "case") == "test case");
+  CHECK(h5.string_attribute("/", "case_file") == "cases/test.toml");
+  CHECK(h5.attribute<std::int32_t>("/", "dimension", H5T_NATIVE_INT32) == 2);
+  CHECK(h5.string_attribute("/", "stress_state") == "plane strain");
+  CHECK(h5.string_attribute("/", "scheme") == "USL");
+  CHECK(h5.string_attribute("/", "shape_function") == "bspline2");
+  CHECK(h5.string_attribute("/", "tensor_components") == "xx yy zz xy yz xz");
+  CHECK(contains(h5.string_attribute("/", "units"), "SI"));
 }
 
 TEST_CASE("ResultsH5 writes only the enabled fields, and empty steps") {
@@ -209,7 +243,7 @@ TEST_CASE("ResultsH5 writes only the enabled fields, and empty steps") {
   const fs::path file = dir.path / "results.h5";
   ParticleSnapshot empty = without(make_snapshot(3, 1.5, 0), {"strain", "mass"});
   {
-    ResultsH5 results(file);
+    ResultsH5 results(file, metadata());
     results.write(empty);
     CHECK(results.bytes_written() == 0);
 
@@ -230,7 +264,7 @@ TEST_CASE("ResultsH5 rejects bad snapshots and reports errors with the file name
   TempDir dir;
   const fs::path file = dir.path / "results.h5";
   {
-    ResultsH5 results(file);
+    ResultsH5 results(file, metadata());
     ParticleSnapshot bad = make_snapshot(1, 0.5, 3);
     field(bad, "stress").real.pop_back();
     CHECK_THROWS_AS(results.write(bad), std::invalid_argument);
@@ -251,7 +285,7 @@ TEST_CASE("ResultsH5 rejects bad snapshots and reports errors with the file name
 
   const fs::path missing = dir.path / "no_such_dir" / "results.h5";
   try {
-    ResultsH5 results(missing);
+    ResultsH5 results(missing, metadata());
     FAIL("creating a file in a missing directory must throw");
   } catch (const std::runtime_error& e) {
     CHECK(contains(e.what(), missing.string()));
@@ -260,10 +294,10 @@ TEST_CASE("ResultsH5 rejects bad snapshots and reports errors with the file name
 
 TEST_CASE("XDMF indexes every written step") {
   TempDir dir;
-  ResultsH5 results(dir.path / "results.h5");
+  ResultsH5 results(dir.path / "results.h5", metadata());
   const double time = 0.1 + 0.2;
-  results.write(make_snapshot(0, 0.0, 4));
-  results.write(make_snapshot(20, time, 7));
+  results.write(make_snapshot(0, 0.0, 7));
+  results.write(make_snapshot(20, time, 4));
 
   const std::string xdmf = xdmf_document("results.h5", results);
   CHECK(contains(xdmf, "<Xdmf Version=\"3.0\">"));
@@ -272,16 +306,23 @@ TEST_CASE("XDMF indexes every written step") {
   CHECK(contains(xdmf, "<Time Value=\"0.30000000000000004\"/>"));
   CHECK(contains(xdmf, "NumberOfElements=\"4\" NodesPerElement=\"1\""));
   CHECK(contains(xdmf, "NumberOfElements=\"7\" NodesPerElement=\"1\""));
-  CHECK(contains(xdmf, "Dimensions=\"4 3\" NumberType=\"Float\" Precision=\"8\">"
-                       "results.h5:/steps/00000000/position</DataItem>"));
   CHECK(contains(xdmf, "Dimensions=\"7 3\" NumberType=\"Float\" Precision=\"8\">"
+                       "results.h5:/steps/00000000/position</DataItem>"));
+  CHECK(contains(xdmf, "Dimensions=\"4 3\" NumberType=\"Float\" Precision=\"8\">"
                        "results.h5:/steps/00000020/position</DataItem>"));
-  // "Matrix", not "Tensor6": XDMF's Tensor6 order is xx xy xz yy yz zz, and
-  // ParaView's legacy XDMF reader expands it to a 3 x 3 tensor in that order.
+  // The topology's connectivity: the first n entries of /particle_index
+  // (7 long), through a HyperSlab (ParaView's default reader needs it).
+  CHECK(contains(xdmf, "<DataItem ItemType=\"HyperSlab\" Dimensions=\"4\">\n"
+                       "            <DataItem Dimensions=\"3 1\" Format=\"XML\">0 1 4</DataItem>\n"
+                       "            <DataItem Format=\"HDF\" Dimensions=\"7\" NumberType=\"Int\" Precision=\"4\">"
+                       "results.h5:/particle_index</DataItem>"));
+  // "Matrix", not "Tensor6": the data are in the order ParaView labels a
+  // 6-component array (xx yy zz xy yz xz); the legacy reader would expand a
+  // Tensor6 to 9 components numbered 0-8.
   CHECK(contains(xdmf, "<Attribute Name=\"stress\" AttributeType=\"Matrix\""));
-  CHECK(contains(xdmf, "Dimensions=\"7 6\" NumberType=\"Float\" Precision=\"8\">"
+  CHECK(contains(xdmf, "Dimensions=\"4 6\" NumberType=\"Float\" Precision=\"8\">"
                        "results.h5:/steps/00000020/strain</DataItem>"));
-  CHECK(contains(xdmf, "Dimensions=\"7\" NumberType=\"Int\" Precision=\"4\">"
+  CHECK(contains(xdmf, "Dimensions=\"4\" NumberType=\"Int\" Precision=\"4\">"
                        "results.h5:/steps/00000020/material</DataItem>"));
   CHECK(contains(xdmf, "<Attribute Name=\"velocity\" AttributeType=\"Vector\""));
   CHECK(contains(xdmf, "<Attribute Name=\"mass\" AttributeType=\"Scalar\""));
@@ -290,7 +331,7 @@ TEST_CASE("XDMF indexes every written step") {
   write_xdmf(path, "results.h5", results);
   CHECK(read_text(path) == xdmf);
 
-  ResultsH5 no_position(dir.path / "other.h5");
+  ResultsH5 no_position(dir.path / "other.h5", metadata());
   no_position.write(without(make_snapshot(0, 0.0, 4), {"position"}));
   CHECK_THROWS_AS(xdmf_document("other.h5", no_position), std::invalid_argument);
 }
@@ -311,21 +352,25 @@ TEST_CASE("timeseries CSV: header, and rows that parse back exactly") {
     ground.strain[i] = std::numeric_limits<double>::max() / static_cast<double>(i + 1);
   }
   row.bodies = {block, ground};
+  row.reactions = {{"base", 1, 12.5 / 3.0}, {"top", 0, -1e-300}};
+  CHECK(reaction_names(row) == std::vector<std::string>{"base.y", "top.x"});
   {
-    TimeseriesCsv csv(path, {"block", "ground"});
+    TimeseriesCsv csv(path, {"block", "ground"}, reaction_names(row));
     csv.write(row);
     // Flushed after each row: the file is complete while still open.
     const std::vector<std::string> lines = split(read_text(path), '\n');
     REQUIRE(lines.size() == 2);
     const std::vector<std::string> header = split(lines[0], ',');
-    REQUIRE(header.size() == 4 + 2 * 12);
+    REQUIRE(header.size() == 4 + 2 * 12 + 2);
     CHECK(lines[0].rfind("step,time,kinetic_energy,strain_energy,block.stress_xx,"
                          "block.stress_yy,block.stress_zz,block.stress_yz,block.stress_xz,"
                          "block.stress_xy,block.strain_xx,",
                          0) == 0);
     CHECK(header[15] == "block.strain_xy");
     CHECK(header[16] == "ground.stress_xx");
-    CHECK(header.back() == "ground.strain_xy");
+    CHECK(header[27] == "ground.strain_xy");
+    CHECK(header[28] == "reaction.base.y");
+    CHECK(header.back() == "reaction.top.x");
 
     const std::vector<std::string> cells = split(lines[1], ',');
     REQUIRE(cells.size() == header.size());
@@ -335,11 +380,15 @@ TEST_CASE("timeseries CSV: header, and rows that parse back exactly") {
       expected.insert(expected.end(), body.stress.begin(), body.stress.end());
       expected.insert(expected.end(), body.strain.begin(), body.strain.end());
     }
+    for (const Reaction& r : row.reactions) expected.push_back(r.force);
     for (std::size_t i = 1; i < cells.size(); ++i) {
       CAPTURE(header[i]);
       CHECK(std::strtod(cells[i].c_str(), nullptr) == expected[i - 1]);
     }
 
+    row.reactions.pop_back();
+    CHECK_THROWS_AS(csv.write(row), std::invalid_argument);
+    row.reactions.push_back({"top", 0, 0.0});
     row.bodies.pop_back();
     CHECK_THROWS_AS(csv.write(row), std::invalid_argument);
   }

@@ -315,7 +315,8 @@ void write_h5(const std::filesystem::path& file, const Sim2& sim, bool with_stre
     for (std::size_t p = 0; p < b.size(); ++p) {
       for (std::size_t d = 0; d < position_columns; ++d) x.push_back(d < 2 ? b.x[p][d] : 0.0);
       v.push_back(b.volume[p]);
-      for (int k = 0; k < 6; ++k) s.push_back(k == 1 ? -50.0 : k == 0 ? -20.0 : k == 2 ? -21.0 : 0.0);
+      // Listed xx, yy, zz, xy, yz, xz, as results.h5 writes them.
+      for (const double value : {-20.0, -50.0, -21.0, 3.0, 0.0, 0.0}) s.push_back(value);
     }
   }
   const hid_t h5 = H5Fcreate(file.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
@@ -375,7 +376,7 @@ TEST_CASE("per-particle material axes and initial stress from a file equal the b
       "Gxz = 5e5\nGyz = 3e5\nnuxy = 0.3\nnuxz = 0.3\nnuyz = 0.4\n";
   const std::string body = "[[bodies]]\nmaterial = \"wood\"\nparticles_per_cell = 2\nmin = [0.2, 0.1]\nmax = [0.4, 0.7]\n";
   const std::string with_axes = body + "material_axes = [30.0]\n"
-                                       "initial_stress = { type = \"uniform\", stress = [-20.0, -50.0, -21.0, 0.0, 0.0, 3.0] }\n";
+                                       "initial_stress = { type = \"uniform\", stress = [-20.0, -50.0, -21.0, 3.0, 0.0, 0.0] }\n";
   const Sim2 original = build("axes_box", case_2d(body, wood + column_extra, gravity));
   write_csv(dir.path / "axes.csv", original,
             ", material_axes_z, stress_xx, stress_yy, stress_zz, stress_yz, stress_xz, stress_xy",
@@ -384,9 +385,9 @@ TEST_CASE("per-particle material axes and initial stress from a file equal the b
   const std::string from_file = "[[bodies]]\nmaterial = \"wood\"\nparticles = \"" + (dir.path / "axes.csv").string() + "\"\n";
   CHECK(column_state(testing::case_from_text("axes_file", case_2d(from_file, wood + column_extra, gravity)), 50) ==
         reference);
-  // An HDF5 stress dataset too.
+  // An HDF5 stress dataset too, with its shear in the listed order.
   write_h5(dir.path / "stress.h5", original, true);
-  const std::string stress_body = body + "initial_stress = { type = \"uniform\", stress = [-20.0, -50.0, -21.0, 0.0, 0.0, 0.0] }\n";
+  const std::string stress_body = body + "initial_stress = { type = \"uniform\", stress = [-20.0, -50.0, -21.0, 3.0, 0.0, 0.0] }\n";
   const std::string stress_file = "[[bodies]]\nmaterial = \"wood\"\nparticles = \"" + (dir.path / "stress.h5").string() + "\"\n";
   CHECK(column_state(testing::case_from_text("stress_file", case_2d(stress_file, wood + column_extra, gravity)), 20) ==
         column_state(testing::case_from_text("stress_box", case_2d(stress_body, wood + column_extra, gravity)), 20));
@@ -496,7 +497,7 @@ TEST_CASE("bad initial stress is rejected with the key and what was expected") {
   }
   SUBCASE("a stress component the analysis does not carry") {
     const std::string m = rejection(
-        "uniform_zz", case_2d(column + "initial_stress = { type = \"uniform\", stress = [0.0, 0.0, 0.0, 1.0, 0.0, 0.0] }\n"));
+        "uniform_zz", case_2d(column + "initial_stress = { type = \"uniform\", stress = [0.0, 0.0, 0.0, 0.0, 1.0, 0.0] }\n"));
     CHECK(m.find("bodies[0].initial_stress.stress: expected sigma_yz and sigma_xz zero in 2D") != std::string::npos);
   }
 }

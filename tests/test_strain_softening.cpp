@@ -205,7 +205,7 @@ namespace {
 // ends move outward at v0 = 0.475 eps_xx,i c after a ramp of 0.2 L / c, so
 // each step wave carries 0.475 of the intact onset strain and their sum at
 // the centre (t = L / c) 0.95: above the notch's onset, below everyone
-// else's. Run to 1.8 L / c (steps of 0.5 h / c): the notch has broken by
+// else's. Run to 1.8 L / c (steps of 0.45 h / c): the notch has broken by
 // 1.6 L / c, and the waves it sends out have not yet come back from the
 // ends (2 L / c), where the pulled ends would load them again.
 // Without the notch the discrete wave fronts (dispersed over a few cells)
@@ -217,7 +217,7 @@ std::string bar_case(int N, bool regularised, int particles_per_cell = 1) {
   const std::string softening = regularised ? "fracture_energy = 2.5\n" : "failure_strain = 2e-4\n";
   std::ostringstream s;
   s.precision(17);
-  s << "[analysis]\ndimension = 2\nscheme = \"usl\"\ndt = " << 0.5 * h / c << "\nsteps = " << 9 * N / 5 << "\n"
+  s << "[analysis]\ndimension = 2\nscheme = \"usl\"\ndt = " << 0.45 * h / c << "\nsteps = " << 2 * N << "\n"
     << "[grid]\norigin = [" << -L - h << ", 0.0]\ncell_size = " << h << "\ncells = [" << N + 2 << ", 1]\n"
     << "[materials.concrete]\n" << base << softening
     << "[materials.notch]\n" << notch << softening;

@@ -1,7 +1,9 @@
 // flowmpm sweep: how a sweep file expands (product order, zipped lists),
 // and the program run on sweeps of the uniaxial stress case (8 particles,
-// milliseconds a case): sweep.csv, a failing case, skipping completed cases
-// on a second run, --jobs, and bad sweep files rejected up front.
+// milliseconds a case) and the small vibrating bar: sweep.csv, a failing
+// case, skipping completed cases on a second run, --jobs, shards and
+// --collect, and bad sweep files or command lines rejected up front. The
+// MPI sweep has its own test (test_sweep_mpi).
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -13,6 +15,7 @@
 #include "io/case_reader.hpp"
 #include "io/sweep_file.hpp"
 #include "run_program.hpp"
+#include "sweep_csv.hpp"
 
 namespace fs = std::filesystem;
 using namespace flowmpm::testing;
@@ -38,54 +41,6 @@ struct SweepDir : TempDir {
     return run_flowmpm(args, path);
   }
 };
-
-// RFC 4180 fields of CSV text, row by row.
-std::vector<std::vector<std::string>> parse_csv(const std::string& text) {
-  std::vector<std::vector<std::string>> rows;
-  std::vector<std::string> row;
-  std::string field;
-  bool quoted = false;
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    const char c = text[i];
-    if (quoted) {
-      if (c == '"' && i + 1 < text.size() && text[i + 1] == '"') {
-        field += '"';
-        ++i;
-      } else if (c == '"') {
-        quoted = false;
-      } else {
-        field += c;
-      }
-    } else if (c == '"') {
-      quoted = true;
-    } else if (c == ',') {
-      row.push_back(field);
-      field.clear();
-    } else if (c == '\n') {
-      row.push_back(field);
-      rows.push_back(row);
-      row.clear();
-      field.clear();
-    } else {
-      field += c;
-    }
-  }
-  return rows;
-}
-
-// sweep.csv as one map per row, column name to field.
-std::vector<std::map<std::string, std::string>> table_of(const fs::path& csv) {
-  const auto rows = parse_csv(read_text(csv));
-  REQUIRE(!rows.empty());
-  std::vector<std::map<std::string, std::string>> table;
-  for (std::size_t r = 1; r < rows.size(); ++r) {
-    REQUIRE(rows[r].size() == rows[0].size());
-    std::map<std::string, std::string> row;
-    for (std::size_t c = 0; c < rows[0].size(); ++c) row[rows[0][c]] = rows[r][c];
-    table.push_back(row);
-  }
-  return table;
-}
 
 // Scheme over usf/usl, the second item of the zip makes a particle leave the
 // grid in the first step: cases 001 and 003 fail.
@@ -300,17 +255,90 @@ TEST_CASE("--jobs 2 gives the rows of --jobs 1, but for wall time and rate") {
     INFO("--jobs " << jobs << " printed:\n" << r.output);
     CHECK(r.status == 2);
     CHECK(contains(r.output, jobs + " at a time on " + (jobs == "1" ? "2 threads" : "1 thread") + " each"));
-    auto table = table_of(dir.path / out / "sweep.csv");
-    for (auto& row : table) {
-      row.erase("wall_seconds");
-      row.erase("particle_steps_per_second");
-    }
-    return table;
+    return results_of(dir.path / out / "sweep.csv");
   };
   const auto one = rows("1", "one");
   const auto two = rows("2", "two");
   CHECK(one.size() == 4);
   CHECK(one == two);
+}
+
+TEST_CASE("shards run the cases whose number is I modulo N, and --collect builds the one-process table") {
+  SweepDir dir;
+  // The vibrating bar with its reference, so that the table has error
+  // columns; a large amplitude makes a particle cross more than a cell in
+  // the first step, so the odd cases 001, 003 and 005 fail.
+  const fs::path base = fs::path(FLOWMPM_SOURCE_DIR) / "configs/verification/bar_vibration_small.toml";
+  write_text(dir.path / "sweep.toml", "base = \"" + base.string() + "\"\n" + R"(
+[vary]
+"analysis.shape_function" = ["linear", "bspline2", "bspline3"]
+[[zip]]
+"reference.amplitude" = [1e-4, 1e3]
+)");
+  const Result whole = dir.run({"--output", "one"});
+  INFO("one process printed:\n" << whole.output);
+  REQUIRE(whole.status == 2);
+  const auto one = results_of(dir.path / "one/sweep.csv");
+  REQUIRE(one.size() == 6);
+
+  // One shard alone runs its cases (1 and 4) and writes no table; --collect
+  // then tabulates what there is and names the cases still missing.
+  const Result shard = dir.run({"--shard", "1/3", "--output", "shards"});
+  INFO("shard 1/3 printed:\n" << shard.output);
+  CHECK(shard.status == 2);
+  CHECK(contains(shard.output, "shard 1/3: 2 of 6 cases"));
+  CHECK(contains(shard.output, "no table for a shard"));
+  CHECK(files_in(dir.path / "shards/cases") == std::vector<std::string>{"001", "004"});
+  CHECK(files_in(dir.path / "shards") == std::vector<std::string>{"cases"});
+  const Result early = dir.run({"--collect", "--output", "shards"});
+  INFO("early --collect printed:\n" << early.output);
+  CHECK(early.status == 2);
+  CHECK(contains(early.output, "4 cases not run yet, or run with another base case or other overrides: 000, 002, "
+                               "003, 005"));
+  CHECK(contains(early.output, "collected 2 of 6 cases: 1 completed, 1 failed (001), 4 missing"));
+  const auto partial = results_of(dir.path / "shards/sweep.csv");
+  CHECK(partial == std::vector<std::map<std::string, std::string>>{one[1], one[4]});
+
+  // The other two at once, as a scheduler runs the jobs of an array.
+  std::vector<Running> others;
+  for (const std::string shard_index : {"0/3", "2/3"}) {
+    others.push_back(start_program({FLOWMPM_EXECUTABLE, "sweep", "sweep.toml", "--shard", shard_index, "--output",
+                                    "shards", "--threads", "1"},
+                                   dir.path));
+  }
+  for (const Running& other : others) {
+    const Result r = wait_for(other);
+    INFO("shard printed:\n" << r.output);
+    CHECK(r.status == 2);
+  }
+  const Result collected = dir.run({"--collect", "--output", "shards"});
+  INFO("--collect printed:\n" << collected.output);
+  CHECK(collected.status == 2);
+  CHECK(contains(collected.output, "collected 6 of 6 cases: 3 completed, 3 failed (001, 003, 005), 0 missing"));
+  CHECK(results_of(dir.path / "shards/sweep.csv") == one);
+}
+
+TEST_CASE("docs/slurm_sweep.sh as the tasks of a job array runs the shards; alone it collects the table") {
+  SweepDir dir;
+  dir.sweep(failing_sweep);
+  REQUIRE(dir.run({"--output", "one"}).status == 2);
+  // Slurm numbers the tasks of --array=3-5 from 3; they are shards 0 to 2.
+  const std::string script = std::string(FLOWMPM_SOURCE_DIR) + "/docs/slurm_sweep.sh";
+  const std::string program = std::string("FLOWMPM=") + FLOWMPM_EXECUTABLE;
+  for (const int task : {3, 4, 5}) {
+    const Result r = wait_for(start_program(
+        {"/bin/bash", script, "sweep.toml", "--output", "array"}, dir.path,
+        {program, "SLURM_ARRAY_TASK_ID=" + std::to_string(task), "SLURM_ARRAY_TASK_MIN=3", "SLURM_ARRAY_TASK_COUNT=3"}));
+    INFO("task " << task << " printed:\n" << r.output);
+    CHECK(contains(r.output, "shard " + std::to_string(task - 3) + "/3"));
+    CHECK(r.status == (task == 5 ? 0 : 2));  // shards 0 and 1 hold the failing cases 003 and 001
+  }
+  const Result collect =
+      wait_for(start_program({"/bin/bash", script, "sweep.toml", "--output", "array"}, dir.path,
+                             {program, "SLURM_ARRAY_TASK_ID=", "SLURM_ARRAY_TASK_COUNT="}));
+  INFO("collecting printed:\n" << collect.output);
+  CHECK(contains(collect.output, "collected 4 of 4 cases: 2 completed, 2 failed (001, 003), 0 missing"));
+  CHECK(results_of(dir.path / "array/sweep.csv") == results_of(dir.path / "one/sweep.csv"));
 }
 
 TEST_CASE("a bad sweep file stops the sweep up front with one message naming the problem, writing nothing") {
@@ -378,4 +406,29 @@ TEST_CASE("sweep command-line misuse") {
   misuse({"sweep", "sweep.toml", "--jobs", "0"}, "--jobs");
   misuse({"sweep", "sweep.toml", "--set", "analysis.dt=0.001"}, "--set");
   misuse({"run", "base.toml", "--jobs", "2"}, "--jobs");
+  misuse({"sweep", "sweep.toml", "--shard", "3/3"}, "--shard: expected I/N, whole numbers with 0 <= I < N");
+  misuse({"sweep", "sweep.toml", "--shard", "1"}, "--shard: expected I/N");
+  misuse({"sweep", "sweep.toml", "--shard", "-1/2"}, "--shard: expected I/N");
+  misuse({"sweep", "sweep.toml", "--mpi", "--shard", "0/2"}, "--mpi excludes --shard");
+  misuse({"sweep", "sweep.toml", "--mpi", "--jobs", "2"}, "--jobs excludes --mpi");
+  misuse({"sweep", "sweep.toml", "--collect", "--shard", "0/2"}, "--shard excludes --collect");
+#ifndef FLOWMPM_MPI
+  misuse({"sweep", "sweep.toml", "--mpi"}, "--mpi: this flowmpm was built without MPI");
+#endif
+}
+
+TEST_CASE("started by mpirun as several processes, flowmpm asks for --mpi instead of running everything N times") {
+  SweepDir dir;
+  dir.sweep("");
+  for (const std::string variable : {"OMPI_COMM_WORLD_SIZE=2", "PMI_SIZE=2"}) {
+    INFO(variable);
+    const Result sweep = run_flowmpm({"sweep", "sweep.toml"}, dir.path, {variable});
+    CHECK(sweep.status == 1);
+    CHECK(contains(sweep.output, "started by an MPI launcher as 2 processes, each of which would run the whole "
+                                 "sweep; add --mpi"));
+    const Result run = run_flowmpm({"run", "base.toml"}, dir.path, {variable});
+    CHECK(run.status == 1);
+    CHECK(contains(run.output, "run a case as one process"));
+    CHECK(files_in(dir.path) == std::vector<std::string>{"base.toml", "sweep.toml"});
+  }
 }
