@@ -46,6 +46,11 @@ TEST_CASE("CB-Geo uniaxial traction, nodal forces: the published stresses at eve
     CHECK(std::abs(lo - p.min) < 5e-9);
     CHECK(std::abs(hi - p.max) < 5e-9);
   }
+  // At rest the support holds the 2 x 0.05 N/m pulling the other end: its
+  // reaction balances the load to the residual wave of the published
+  // stresses (2e-5 of sigma_xx).
+  REQUIRE(sim.system().constraints.size() == 1);
+  CHECK(sim.system().constraints[0].reaction == doctest::Approx(-0.1).epsilon(1e-4));
 }
 
 TEST_CASE("CB-Geo uniaxial traction: nodal forces and particle traction both end at sigma_xx = 1 Pa") {

@@ -101,25 +101,21 @@ TEST_CASE("a slowly ramped traction, without damping, ends as sigma_xx = tractio
 
 TEST_CASE("the reaction at the held nodes balances the applied traction") {
   // Linear shape functions (no mirror nodes: the held plane's nodes carry
-  // the whole reaction), MUSL. After the damped run the nodal force on the
-  // held nodes (internal plus external, before the constraint overrides
-  // it) is what the block pulls them with; the support's reaction is its
-  // opposite, and balances t H = 1000 Pa x 0.2 m = 200 N/m to 1e-3 after
-  // 3 s (linear shape functions come to rest more slowly than B-splines:
-  // the mean stress is 970 Pa at 0.5 s, 999.4 Pa at 2 s). The mean stress
-  // is t to 1e-3 (3.8e-4 above it at rest: the dead load over the
-  // laterally contracted height).
+  // the whole reaction), MUSL, local damping. The held set's reaction (the
+  // engine's, as timeseries.csv reports it: README "Output") must balance
+  // t H = 1000 Pa x 0.2 m = 200 N/m once the block is at rest: asserted to
+  // 1e-3 after 3 s (linear shape functions come to rest more slowly than
+  // B-splines: the mean stress is 970 Pa at 0.5 s, 999.4 Pa at 2 s). The
+  // mean stress is t to 1e-3 (3.8e-4 above it at rest: the dead load over
+  // the laterally contracted height).
   const Case c = testing::case_from_text(
       "reaction", block("linear", "dt = 5e-4\nend_time = 3.0\n", traction_load + "[damping]\nlocal = 0.8\n"),
       {"analysis.scheme=musl"});
   auto sim = testing::simulation<2, LinearShape>(c);
   run_steps(sim, c);
   const auto& system = sim.system();
-  double pull = 0.0;
-  for (const NodeConstraint& k : system.constraints)
-    for (std::size_t n : k.nodes) pull += system.grid.force[0][n];
-  const double reaction = -pull;
-  CHECK(std::abs(reaction + 200.0) < 1e-3 * 200.0);
+  REQUIRE(system.constraints.size() == 1);
+  CHECK(system.constraints[0].reaction == doctest::Approx(-200.0).epsilon(1e-3));
   CHECK(sim.diagnostics(1).bodies[0].stress[0] == doctest::Approx(1000.0).epsilon(1e-3));
 }
 
@@ -168,15 +164,20 @@ TEST_CASE("a pressure on every face of a free block compresses it hydrostaticall
 TEST_CASE("viscous damping: a free translation decays as (1 - c dt)^n, and the energy it removes is reported") {
   // A block moving at 1 m/s, viscous damping c = 20 1/s, 100 steps of
   // 1e-3 s: v = (1 - c dt)^100 = 0.98^100. The grid velocity of a uniform
-  // translation equals the particles' (linear shape functions, FLIP), so
-  // the kinetic energy lost equals the dissipated damping work to round-off.
+  // translation equals the particles' (uGIMP, FLIP), so the kinetic energy
+  // lost equals the dissipated damping work to round-off. (Not with linear
+  // shape functions: there a node the moving block barely reaches is held at
+  // its start-of-step velocity for the position and stress updates,
+  // tasks/grid_update.hpp held_node, and the damped block strains by
+  // c dt v dt / h at its front, leaving v within 1.6 % of the decay.)
   const Case c = testing::case_from_text(
       "viscous",
       "[analysis]\ndimension = 2\ndt = 1e-3\nsteps = 100\n[grid]\norigin = [0.0, 0.0]\ncell_size = 0.05\ncells = [20, 8]\n"
       "[materials.elastic]\ntype = \"linear_elastic\"\ndensity = 1000.0\nyoungs_modulus = 1e5\npoisson_ratio = 0.3\n"
       "[[bodies]]\nmaterial = \"elastic\"\nparticles_per_cell = 2\nmin = [0.2, 0.1]\nmax = [0.4, 0.3]\nvelocity = [1.0, 0.0]\n"
-      "[damping]\nviscous = 20.0\n");
-  auto sim = testing::simulation<2, LinearShape>(c);
+      "[damping]\nviscous = 20.0\n",
+      {"analysis.shape_function=gimp"});
+  auto sim = testing::simulation<2, GimpShape>(c);
   const double e0 = sim.diagnostics(1).kinetic_energy;
   for (int s = 0; s < 100; ++s) sim.advance();
   for (const auto& v : sim.system().batches[0].v) CHECK(v[0] == doctest::Approx(std::pow(0.98, 100)).epsilon(1e-12));
