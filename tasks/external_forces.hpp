@@ -4,6 +4,7 @@
 //   nodal forces:        f_I += F(t) on each node of the set;
 //   tractions:           f_I += N_I(x_f) t(t) A_f,
 //   pressures:           f_I += -N_I(x_f) p(t) A_f n_f,
+// (with uGIMP, N_I averaged over the face),
 // x_f = x_p + offset the centre of a loaded face of particle p, A_f its
 // area and n_f its outward normal: the traction acts on the body's surface,
 // not at the particle's centre; N_I are renormalised over the nodes that
@@ -49,17 +50,28 @@ void add_external_forces(DiscreteSystem<D, Shape>& system) {
       }
       Vec<D> force = face.area * traction;
       force[face.axis] -= pressure * face.area * face.sign;
-      // Only nodes that carry mass move: the face's force goes to those of
-      // its stencil, in proportion to N there. (A face on the last massive
-      // node plane reaches past it; the share of the node beyond would be
-      // lost.)
-      const Stencil<D, Shape, false> s(grid, x, b.half_width);
+      // The face's force goes to the nodes of its stencil that carry the
+      // body, in proportion to N there. A node lighter than a millionth of
+      // the face's particle carries none of it: it sees only the far tail
+      // of the particles' shape functions, or round-off (uGIMP's particle
+      // domains end on the face's grid line), and a share of the force
+      // would accelerate it without bound.
+      const double light = 1e-6 * b.mass[face.particle];
+      // The face is a surface: uGIMP averages N over its extent along the
+      // face and evaluates it at the face along its normal (half-width 0),
+      // f_I = integral over the face of t N_I. (Averaged along the normal
+      // too, N would reach a node beyond the face that the body's particles
+      // barely reach, with a share of the force out of all proportion to its
+      // mass: a block under a traction blew up in two steps.)
+      Vec<D> half_width = b.half_width;
+      half_width[face.axis] = 0.0;
+      const Stencil<D, Shape, false> s(grid, x, half_width);
       double carried = 0.0;
       for (int a = 0; a < s.size; ++a)
-        if (grid.mass[s.node(a)] > 0.0) carried += s.N(a);
+        if (grid.mass[s.node(a)] > light) carried += s.N(a);
       if (carried <= 0.0) continue;
       for (int a = 0; a < s.size; ++a) {
-        if (grid.mass[s.node(a)] <= 0.0) continue;
+        if (grid.mass[s.node(a)] <= light) continue;
         for (int d = 0; d < D; ++d) grid.force[d][s.node(a)] += s.N(a) / carried * force[d];
       }
     }

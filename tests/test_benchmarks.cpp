@@ -54,9 +54,9 @@ TEST_CASE("CB-Geo uniaxial traction, nodal forces: the published stresses at eve
 }
 
 TEST_CASE("CB-Geo uniaxial traction: nodal forces and particle traction both end at sigma_xx = 1 Pa") {
-  // Measured: largest deviation 1.03e-6 (nodal forces) and 4.3e-6
-  // (traction at the particles' faces) at t = 1 s; the ramp's residual
-  // wave. CB-Geo's particle traction, applied at the particles' centres,
+  // Measured: largest deviation 1.03e-6 with either (the traction at the
+  // particles' faces loads the same two nodes) at t = 1 s; the ramp's
+  // residual wave. CB-Geo's particle traction, applied at the particles' centres,
   // leaves 0.75 Pa in the loaded particles (README).
   CHECK(run_benchmark("uniaxial_traction_nodal").errors.at("stress_max") < 1e-5);
   CHECK(run_benchmark("uniaxial_traction_particle").errors.at("stress_max") < 1e-5);

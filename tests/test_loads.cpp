@@ -43,7 +43,8 @@ void run_steps(Simulation<2, Shape>& sim, const Case& c) {
 }
 
 // The largest |sigma_xx - t| and |sigma_yy| over the particles, over t.
-std::pair<double, double> deviation(const DiscreteSystem<2, QuadraticBSpline>& system, double t) {
+template <class Shape>
+std::pair<double, double> deviation(const DiscreteSystem<2, Shape>& system, double t) {
   double axial = 0.0, lateral = 0.0;
   for (const auto& b : system.batches) {
     for (const auto& s : b.stress) {
@@ -68,18 +69,27 @@ std::string rejection(const std::string& name, const std::string& text) {
 TEST_CASE("a suddenly applied traction, with local damping, ends as sigma_xx = traction in every particle") {
   // 1 kPa at t = 0 on the +x face; local damping alpha = 0.8 removes the
   // waves (the bar's first period, 4 L / c, is 0.13 s). Asserted: every
-  // particle within 2e-3 of the traction after 1 s (measured 1.0e-3 axial,
-  // 4.8e-4 lateral; 1.8e-3 after 0.5 s: the damping's slow last approach).
-  // Of that, 4e-4 is physical: the traction is a dead load on the initial
-  // area, which the lateral contraction shrinks.
+  // particle within 3e-3 of the traction after 1 s (measured, axial and
+  // lateral: B-spline 2 1.0e-3 and 4.8e-4, uGIMP 2.1e-3 and 7.5e-4; the
+  // damping's slow last approach). Of that, 4e-4 is physical: the traction
+  // is a dead load on the initial area, which the lateral contraction
+  // shrinks. With uGIMP the face's force must be N averaged along the face
+  // only (tasks/external_forces.hpp): averaged across it too, the block
+  // blew up in two steps.
   const Case c = testing::case_from_text("sudden", block("bspline2", "dt = 5e-4\nend_time = 1.0\n",
                                                          traction_load + "[damping]\nlocal = 0.8\n"));
-  auto sim = testing::simulation<2, QuadraticBSpline>(c);
-  run_steps(sim, c);
-  const auto [axial, lateral] = deviation(sim.system(), 1000.0);
-  CHECK(axial < 2e-3);
-  CHECK(lateral < 2e-3);
-  CHECK(sim.system().damping_dissipated > 0.0);
+  auto check = [&]<class Shape>(const Case& c) {
+    auto sim = testing::simulation<2, Shape>(c);
+    run_steps(sim, c);
+    const auto [axial, lateral] = deviation(sim.system(), 1000.0);
+    CHECK(axial < 3e-3);
+    CHECK(lateral < 3e-3);
+    CHECK(sim.system().damping_dissipated > 0.0);
+  };
+  check.operator()<QuadraticBSpline>(c);
+  const Case gimp = testing::case_from_text("sudden", block("gimp", "dt = 5e-4\nend_time = 1.0\n",
+                                                            traction_load + "[damping]\nlocal = 0.8\n"));
+  check.operator()<GimpShape>(gimp);
 }
 
 TEST_CASE("a slowly ramped traction, without damping, ends as sigma_xx = traction to the ramp's residual wave") {
