@@ -113,6 +113,20 @@ void log_system(spdlog::logger& log, const Case& c, const Simulation<D, Shape>& 
     log.info("surface flux '{}': {}{}", f.name, f.heat ? "heat" : "", f.solvent ? (f.heat ? " and solvent" : "solvent") : "");
   }
   if (system.gravity.norm() > 0.0) log.info("gravity: {} m/s^2", system.gravity.norm());
+  for (const auto& load : system.loads.surface) log.info("load: {}", load.description);
+  for (const auto& load : system.loads.nodal) log.info("load: {}", load.description);
+  for (const auto& load : system.loads.body) log.info("load: {}", load.description);
+  if (system.damping) {
+    log.info("damping: local alpha {}, viscous c {} 1/s (at t = 0; README \"Damping\")", system.damping->local(0.0),
+             system.damping->viscous(0.0));
+  }
+  for (const auto& body : c.system.bodies) {
+    if (body.initial_stress) {
+      log.info("body '{}': initial stress {}", body.name, InitialStresses::name_of(*body.initial_stress));
+    } else if (body.particles && !body.particles->stress.empty()) {
+      log.info("body '{}': initial stress per particle from {}", body.name, body.particles->source);
+    }
+  }
   const TimeStepLimit limits = time_step_limit(c.system, scheme);
   const StableStep& stable = limits.wave;
   if (c.dt_auto) {
@@ -350,7 +364,8 @@ RunSummary run(const Case& c, const RunOptions& options, const std::string& fres
   auto balance_error = [&](const Diagnostics& d) {
     const double error = d.energy_balance() - balance_at_start;
     energy_scale = std::max({energy_scale, d.kinetic_energy + d.stored_energy + d.dissipated_energy,
-                             std::abs(d.work.gravity), std::abs(d.work.boundary), std::abs(d.work.expansion)});
+                             std::abs(d.work.gravity), std::abs(d.work.boundary), std::abs(d.work.expansion),
+                             std::abs(d.work.load)});
     worst_balance_error = std::max(worst_balance_error, std::abs(error));
     return error;
   };
@@ -397,13 +412,18 @@ RunSummary run(const Case& c, const RunOptions& options, const std::string& fres
       summary.bodies.push_back(
           {c.system.bodies[i].name, final_state.bodies[i].stress, final_state.bodies[i].strain});
     }
-    if (reference) summary.errors = reference->errors();
+    if (reference) {
+      summary.errors = reference->errors();
+      summary.measures = reference->measures();
+    }
+    if (system.damping) summary.damping_dissipated = system.damping_dissipated;
     summary.kinetic_energy = final_state.kinetic_energy;
     summary.stored_energy = final_state.stored_energy;
     summary.dissipated_energy = final_state.dissipated_energy;
     summary.gravity_work = final_state.work.gravity;
     summary.boundary_work = final_state.work.boundary;
     summary.expansion_work = final_state.work.expansion;
+    summary.load_work = final_state.work.load;
     summary.energy_error = energy_scale > 0.0 ? worst_balance_error / energy_scale
                                               : std::numeric_limits<double>::quiet_NaN();
     if (options.write_results) {
@@ -533,13 +553,17 @@ RunSummary run(const Case& c, const RunOptions& options, const std::string& fres
               b.mean_strain[1], b.mean_strain[2]);
   }
   log->info("energy at the end: kinetic {:.6g} J, stored {:.6g} J, dissipated {:.6g} J; work done by gravity "
-            "{:.6g} J, by the constraints {:.6g} J, by the expansion strains {:.6g} J; balance error {:.3g} of the "
-            "largest energy present",
+            "and body forces {:.6g} J, by the constraints {:.6g} J, by the expansion strains {:.6g} J, by the loads "
+            "{:.6g} J; balance error {:.3g} of the largest energy present",
             summary.kinetic_energy, summary.stored_energy, summary.dissipated_energy, summary.gravity_work,
-            summary.boundary_work, summary.expansion_work, summary.energy_error);
+            summary.boundary_work, summary.expansion_work, summary.load_work, summary.energy_error);
   for (const auto& [name, value] : summary.errors) {
     log->info("error against the {} reference: {} = {:.4g}", reference->type(), name, value);
   }
+  for (const auto& [name, value] : summary.measures) {
+    log->info("measured by the {} reference: {} = {:.6g}", reference->type(), name, value);
+  }
+  if (summary.damping_dissipated) log->info("energy dissipated by damping: {:.6g} J", *summary.damping_dissipated);
   return summary;
 }
 

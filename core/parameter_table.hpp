@@ -5,6 +5,7 @@
 // a message naming the file, the line, the dotted key and what was expected.
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -32,6 +33,16 @@ class ParameterTable {
   // (piecewise linear between them, constant outside); `what` names the
   // quantity and its unit for messages ("a temperature change in K").
   virtual TimeFunction time_function(std::string_view key, std::string_view what) = 0;
+  // Calls read(sub) on the sub-table `key` (required), then fails on any
+  // key of it that read() left unread.
+  virtual void read_table(std::string_view key, const std::function<void(ParameterTable&)>& read) = 0;
+  // The same for each table of the array of tables `key`, in order; none
+  // when the key is absent.
+  virtual void read_tables(std::string_view key, const std::function<void(ParameterTable&)>& read) = 0;
+  // "file:line: dotted.key" of a key (of the table when the key is absent;
+  // "file:line: table" for an empty key), for messages about it once the
+  // case is read (e.g. a load that selects nothing when the system is built).
+  virtual std::string where(std::string_view key) const = 0;
 
   // Throws CaseError naming the key, its line and what was expected.
   [[noreturn]] void fail(std::string_view key, std::string_view expected) const {

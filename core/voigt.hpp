@@ -10,6 +10,11 @@ using Voigt = std::array<double, 6>;
 // The component names, in Voigt order.
 inline constexpr std::array<const char*, 6> voigt_component_names = {"xx", "yy", "zz", "yz", "xz", "xy"};
 
+// The order a symmetric tensor's six values are listed in outside the
+// engine (case keys, particle files, results.h5): xx, yy, zz, xy, yz, xz,
+// VTK's; entry k is the Voigt slot of the k-th value listed.
+inline constexpr std::array<int, 6> voigt_slot_of_listed = {0, 1, 2, 5, 3, 4};
+
 // The Voigt slot of tensor component (i, j).
 constexpr int voigt_slot(int i, int j) {
   if (i == j) return i;

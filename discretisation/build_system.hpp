@@ -1,11 +1,14 @@
-// Builds the DiscreteSystem of a SystemSpec: the grid, particles filling each
-// body's box at its spacing (one batch per body, of one material), velocity
+// Builds the DiscreteSystem of a SystemSpec: the grid, each body's particles
+// (the lattice points inside its shape, or particles from a file; one batch
+// per body, of one material) with their initial stress, velocity
 // constraints and prescribed temperatures and concentrations on node sets,
-// surface fluxes, then the first sort. Temperatures and concentrations are
-// stored only when the scene conducts heat or diffuses solvent. Volumes are per unit
-// thickness in 2D and per unit cross-section in 1D. Throws CaseError naming
-// the spec's source and the body or node set for what only the built system
-// can tell (a body in the outermost cells, a node set with no node).
+// surface fluxes, loads and damping, then the first sort. Temperatures and
+// concentrations are stored only when the scene conducts heat or diffuses
+// solvent. Volumes are per unit thickness in 2D and per unit cross-section
+// in 1D. Throws CaseError naming the spec's source and the body, node set
+// or load for what only the built system can tell (a shape with no lattice
+// point, overlapping bodies, a body in the outermost cells, a node set with
+// no node, a load that acts on nothing).
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -15,7 +18,9 @@
 #include <type_traits>
 
 #include "core/errors.hpp"
+#include "discretisation/body_overlap.hpp"
 #include "discretisation/particle_sort.hpp"
+#include "discretisation/surface_faces.hpp"
 #include "discretisation/system_spec.hpp"
 
 namespace flowmpm {
@@ -50,6 +55,44 @@ std::vector<std::pair<std::size_t, std::size_t>> ghost_mirror_pairs(const Discre
   return pairs;
 }
 
+namespace detail {
+
+// A body's particles before its batch is made: the lattice points inside
+// its shape (each with the lattice cell's volume), or its particle file.
+inline ParticleList body_particles(const BodySpec& body, int dimension, std::optional<Lattice>& lattice) {
+  if (body.particles) return *body.particles;
+  lattice.emplace(body.shape.bounds(), body.spacing, dimension);
+  ParticleList list;
+  list.position = fill(body.shape, *lattice);
+  list.volume.assign(list.position.size(), lattice->cell_volume());
+  if (list.position.empty()) {
+    throw CaseError(body.where + ": expected a shape that holds particle centres of its lattice, got a " +
+                    body.shape.type() + " with none");
+  }
+  return list;
+}
+
+// The initial stress of a body's particle at x: from its file, else the
+// body's initial_stress, else 0. `top` is the body's highest point along
+// the vertical (geostatic).
+inline Voigt initial_stress(const BodySpec& body, const ParticleList& list, std::size_t p, double rho, double top) {
+  if (!list.stress.empty()) return list.stress[p];
+  if (!body.initial_stress) return Voigt{};
+  return std::visit([&](const auto& s) { return s.at(list.position[p], rho, top); }, *body.initial_stress);
+}
+
+// The body's highest point along `axis`: its shape's bounds, or its
+// highest particle plus half its size.
+inline double body_top(const BodySpec& body, const ParticleList& list, int axis, int dimension) {
+  if (!body.particles) return body.shape.bounds().max[axis];
+  double top = -std::numeric_limits<double>::infinity();
+  for (std::size_t p = 0; p < list.size(); ++p)
+    top = std::max(top, list.position[p][axis] + 0.5 * std::pow(list.volume[p], 1.0 / dimension));
+  return top;
+}
+
+}  // namespace detail
+
 template <int D, class Shape>
 void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
   Vec<D> origin, h;
@@ -80,20 +123,24 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
   // The least particle mass and heat capacity, for the transport thresholds.
   double lightest = std::numeric_limits<double>::infinity();
   double least_heat_capacity = std::numeric_limits<double>::infinity();
+
+  // Every body's particles first: overlaps are resolved between them.
+  std::vector<ParticleList> particles;
+  std::vector<BodyGeometry> geometry(spec.bodies.size());
+  for (std::size_t bi = 0; bi < spec.bodies.size(); ++bi) {
+    particles.push_back(detail::body_particles(spec.bodies[bi], D, geometry[bi].lattice));
+    if (!spec.bodies[bi].particles) geometry[bi].shape = &spec.bodies[bi].shape;
+  }
+  resolve_overlaps(spec, particles);
+
   for (std::size_t bi = 0; bi < spec.bodies.size(); ++bi) {
     const BodySpec& body = spec.bodies[bi];
+    // Released once the batch is made: set-up needs no more memory than the sort.
+    const ParticleList list = std::move(particles[bi]);
+    const std::size_t n = list.size();
     ParticleBatch<D> batch;
     batch.body = static_cast<int>(bi);
     batch.material = body.material;
-    Index<D> count;
-    std::size_t n = 1;
-    double volume = 1.0;
-    for (int d = 0; d < D; ++d) {
-      // Whole spacings that fit in the box, centred in it.
-      count[d] = std::max(1, static_cast<int>(std::floor((body.box_max[d] - body.box_min[d]) / body.spacing[d] + 1e-9)));
-      n *= static_cast<std::size_t>(count[d]);
-      volume *= body.spacing[d];
-    }
     const double rho = density(system.materials[body.material]);
     Vec<D> v0;
     for (int d = 0; d < D; ++d) v0[d] = body.velocity[d];
@@ -105,25 +152,33 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
     const bool has_fluxes = std::ranges::any_of(batch.surface_flux, [](int k) { return k >= 0; });
     for (std::size_t p = 0; p < n; ++p) {
       Vec<D> x;
-      std::uint8_t faces = 0;
-      std::size_t rest = p;
-      for (int d = 0; d < D; ++d) {
-        const int i = static_cast<int>(rest % count[d]);
-        rest /= count[d];
-        const double margin = 0.5 * ((body.box_max[d] - body.box_min[d]) - count[d] * body.spacing[d]);
-        x[d] = body.box_min[d] + margin + (i + 0.5) * body.spacing[d];
-        // The first and last layers of particles lie on the box's faces.
-        if (i == 0 && batch.surface_flux[2 * d] >= 0) faces |= std::uint8_t(1u << (2 * d));
-        if (i == count[d] - 1 && batch.surface_flux[2 * d + 1] >= 0) faces |= std::uint8_t(1u << (2 * d + 1));
-      }
+      for (int d = 0; d < D; ++d) x[d] = list.position[p][d];
       batch.x.push_back(x);
-      if (has_fluxes) batch.flux_faces.push_back(faces);
+      batch.mass.push_back(rho * list.volume[p]);
+    }
+    // The particles on a face with a surface flux: the body's surface faces
+    // with that normal (the first or last lattice layer of a box).
+    if (has_fluxes) {
+      if (!geometry[bi].lattice) {
+        throw CaseError(spec.source + ": surface_fluxes on bodies \"" + body.name +
+                        "\": its particles come from a file, so it has no faces; give the body a shape");
+      }
+      batch.flux_faces.assign(n, 0);
+      for (int k = 0; k < 2 * D; ++k) {
+        if (batch.surface_flux[k] < 0) continue;
+        const std::pair<int, double> face{k / 2, k % 2 ? 1.0 : -1.0};
+        for (const LoadedFace<D>& f : surface_faces(batch, body.shape, *geometry[bi].lattice, std::nullopt, face))
+          batch.flux_faces[f.particle] |= std::uint8_t(1u << k);
+      }
     }
     batch.v.assign(n, v0);
     if (spec.keep_initial_positions) batch.x0 = batch.x;
-    batch.mass.assign(n, rho * volume);
-    batch.volume.assign(n, volume);
-    batch.stress.assign(n, Voigt{});
+    batch.volume = list.volume;
+    double top = 0.0;
+    if (body.initial_stress) {
+      if (const auto* g = std::get_if<GeostaticStress>(&*body.initial_stress)) top = detail::body_top(body, list, g->vertical, D);
+    }
+    for (std::size_t p = 0; p < n; ++p) batch.stress.push_back(detail::initial_stress(body, list, p, rho, top));
     batch.strain.assign(n, Voigt{});
     if (system.heat.carried) {
       batch.temperature.assign(n, body.temperature);
@@ -131,14 +186,21 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
       // update: T - T_ref (materials/expansion.hpp).
       const auto& reference = transport(system.materials[body.material]).reference_temperature;
       batch.temperature_step.assign(n, reference ? body.temperature - *reference : 0.0);
-      least_heat_capacity = std::min(least_heat_capacity, rho * volume * transport(system.materials[body.material]).heat_capacity);
+      for (const double v : list.volume)
+        least_heat_capacity = std::min(least_heat_capacity, rho * v * transport(system.materials[body.material]).heat_capacity);
     }
     if (system.solvent.carried) {
       batch.concentration.assign(n, body.concentration);
       batch.concentration_step.assign(n, body.concentration);  // since c = 0, stress free
     }
-    batch.particle_length = std::pow(volume, 1.0 / D);
-    for (int d = 0; d < D; ++d) batch.half_width[d] = 0.5 * body.spacing[d] * system.grid.inv_h[d];
+    // The particle size: a lattice cell, or the mean particle of a file.
+    double mean_volume = 0.0;
+    for (const double v : list.volume) mean_volume += v / static_cast<double>(n);
+    batch.particle_length = std::pow(body.particles ? mean_volume : list.volume[0], 1.0 / D);
+    for (int d = 0; d < D; ++d) {
+      const double side = body.particles ? batch.particle_length : body.spacing[d];
+      batch.half_width[d] = 0.5 * side * system.grid.inv_h[d];
+    }
     // A model may reject its parameters for this body's particles (e.g. a
     // crack band wider than the fracture energy allows): name the body.
     auto initial_states = [&](const auto& material) -> MaterialStates {
@@ -148,14 +210,15 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
       if constexpr (!std::is_empty_v<typename M::State>) {
         states.reserve(n);
         ParticleInit init;
-        init.axes_degrees = body.material_axes;
         init.length = batch.particle_length;
         init.cell_length = std::pow(system.grid.h.prod(), 1.0 / D);
-        for (const Vec<D>& x : batch.x) {
-          for (int d = 0; d < D; ++d) init.position[d] = x[d];
+        for (std::size_t p = 0; p < n; ++p) {
+          const Vec3 axes = list.material_axes.empty() ? body.material_axes : list.material_axes[p];
+          init.axes_degrees = axes;
+          for (int d = 0; d < D; ++d) init.position[d] = batch.x[p][d];
           if (const auto& center = body.material_axes_center; center && D > 1) {
             const double radial = std::atan2(init.position[1] - (*center)[1], init.position[0] - (*center)[0]);
-            init.axes_degrees[0] = body.material_axes[0] + radial * 180.0 / std::numbers::pi;
+            init.axes_degrees[0] = axes[0] + radial * 180.0 / std::numbers::pi;
           }
           states.push_back(material.initial_state(init));
         }
@@ -168,7 +231,7 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
       throw CaseError(spec.source + ": bodies \"" + body.name + "\" (material \"" +
                       spec.materials[body.material].name + "\"): " + e.what());
     }
-    lightest = std::min(lightest, rho * volume);
+    for (const double v : list.volume) lightest = std::min(lightest, rho * v);
     system.batches.push_back(std::move(batch));
   }
   // A node holding less than a millionth of the least particle capacity
@@ -190,6 +253,7 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
     next_id += static_cast<std::uint32_t>(batch.size());
   }
 
+  std::vector<std::vector<std::size_t>> node_set_nodes;
   for (const NodeSetSpec& set : spec.node_sets) {
     std::vector<std::size_t> nodes;
     const auto& g = system.grid;
@@ -214,25 +278,56 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
     }
     if (set.temperature) system.heat.prescribed.push_back({set.name, nodes, *set.temperature});
     if (set.concentration) system.solvent.prescribed.push_back({set.name, nodes, *set.concentration});
-    if (!set.constrains_velocity()) continue;
-    auto pairs = ghost_mirror_pairs<D, Shape>(system, set, nodes);
-    if (!pairs.empty()) {
-      for (NodeConstraint& k : system.constraints)
-        if (k.name == set.name) k.mirror_plane = static_cast<int>(system.mirror_planes.size());
-      system.mirror_planes.push_back({set.name, std::move(pairs), set.velocity});
+    if (set.constrains_velocity()) {
+      auto pairs = ghost_mirror_pairs<D, Shape>(system, set, nodes);
+      if (!pairs.empty()) {
+        for (NodeConstraint& k : system.constraints)
+          if (k.name == set.name) k.mirror_plane = static_cast<int>(system.mirror_planes.size());
+        system.mirror_planes.push_back({set.name, std::move(pairs), set.velocity});
+      }
     }
+    node_set_nodes.push_back(std::move(nodes));
   }
 
-  // Every particle must start where its stencil has grid nodes.
+  std::vector<std::string> body_names, node_set_names;
+  for (const BodySpec& b : spec.bodies) body_names.push_back(b.name);
+  for (const NodeSetSpec& s : spec.node_sets) node_set_names.push_back(s.name);
+  LoadSite<D, Shape> site{system, geometry, node_set_nodes, body_names, node_set_names};
+  for (const Load& load : spec.loads) std::visit([&](const auto& l) { l.attach(site); }, load);
+
+  if (spec.damping) {
+    system.damping = *spec.damping;
+    // Prescribed velocities are not damped: constrained axes and ghost nodes.
+    auto& undamped = system.damping->undamped;
+    undamped.assign(system.grid.node_count(), 0);
+    for (const NodeConstraint& c : system.constraints)
+      for (const std::size_t n : c.nodes) undamped[n] |= static_cast<std::uint8_t>(1u << c.axis);
+    for (const MirrorPlane& plane : system.mirror_planes)
+      for (const auto& [ghost, mirror] : plane.pairs) undamped[ghost] = 0x7;
+  }
+
+  // Every particle, and every loaded face, must start where its stencil
+  // has grid nodes.
+  auto inside = [&](const Vec<D>& x) {
+    const Index<D> cell = system.grid.cell_of(x);
+    for (int d = 0; d < D; ++d)
+      if (cell[d] < Shape::reach_below || cell[d] + Shape::reach_above > cells[d]) return false;
+    return true;
+  };
   for (const auto& batch : system.batches) {
     for (const auto& x : batch.x) {
-      const Index<D> cell = system.grid.cell_of(x);
-      for (int d = 0; d < D; ++d) {
-        if (cell[d] < Shape::reach_below || cell[d] + Shape::reach_above > cells[d]) {
-          throw CaseError(spec.source + ": bodies \"" + spec.bodies[batch.body].name +
-                          "\": particles lie in the outermost cells, where the " + Shape::name +
-                          " shape function has no nodes; enlarge the grid");
-        }
+      if (!inside(x)) {
+        throw CaseError(spec.source + ": bodies \"" + spec.bodies[batch.body].name +
+                        "\": particles lie in the outermost cells, where the " + Shape::name +
+                        " shape function has no nodes; enlarge the grid");
+      }
+    }
+  }
+  for (const SurfaceLoad<D>& load : system.loads.surface) {
+    for (const LoadedFace<D>& face : load.faces) {
+      if (!inside(system.batches[load.batch].x[face.particle] + face.offset)) {
+        throw CaseError(spec.source + ": " + load.description + ": a loaded face lies in the outermost cells, where the " +
+                        Shape::name + " shape function has no nodes; enlarge the grid");
       }
     }
   }

@@ -11,6 +11,7 @@
 
 #include "core/time_function.hpp"
 #include "discretisation/blocks.hpp"
+#include "discretisation/external_loads.hpp"
 #include "discretisation/grid.hpp"
 #include "discretisation/particles.hpp"
 #include "materials/material.hpp"
@@ -109,9 +110,10 @@ struct BlockEnergy {
 
 // The work done on the bodies since t = 0 (J), for the energy balance.
 struct WorkDone {
-  double gravity = 0.0;    // by gravity: the fall of the potential energy
+  double gravity = 0.0;    // by gravity and the body forces: sum m g_p . dx
   double boundary = 0.0;   // by the velocity constraints' reactions
   double expansion = 0.0;  // by the expansion strains (thermal, solvent) against the stress
+  double load = 0.0;       // by the tractions, pressures and nodal forces (README "Loads")
 };
 
 template <int D, class Shape>
@@ -129,6 +131,15 @@ struct DiscreteSystem {
   TransportField heat, solvent;
   std::vector<SurfaceFlux> surface_fluxes;
   Vec<D> gravity = Vec<D>::Zero();
+  ExternalLoads<D> loads;          // tractions, pressures, nodal and body forces
+  std::optional<Damping> damping;  // quasi-static damping, if the case has it
+  // Power of the damping forces over the last step (W; per unit thickness
+  // in 2D, per unit cross-section in 1D): sum over the nodes of f_d . v,
+  // v the mean of the node's velocity before and after the update, so that
+  // it is exactly the damping's share of the grid's kinetic energy change
+  // (<= 0). damping_dissipated = -sum of damping_power dt over the steps (J).
+  double damping_power = 0.0;
+  double damping_dissipated = 0.0;
   double flip_fraction = 1.0;
 
   double t = 0.0, dt = 0.0;  // time at the start of the step, time step (s)

@@ -21,6 +21,21 @@ void permute(std::vector<T>& field, const std::vector<std::uint32_t>& order) {
   field.swap(sorted);
 }
 
+// Loaded faces follow their particles through a sort of batch `batch`
+// (the particle at index order[i] moves to i).
+template <int D>
+void renumber_loaded_faces(std::vector<SurfaceLoad<D>>& loads, int batch, const std::vector<std::uint32_t>& order) {
+  std::vector<std::uint32_t> moved_to;
+  for (SurfaceLoad<D>& load : loads) {
+    if (load.batch != batch) continue;
+    if (moved_to.empty()) {
+      moved_to.resize(order.size());
+      for (std::uint32_t i = 0; i < order.size(); ++i) moved_to[order[i]] = i;
+    }
+    for (LoadedFace<D>& face : load.faces) face.particle = moved_to[face.particle];
+  }
+}
+
 }  // namespace detail
 
 template <int D, class Shape>
@@ -34,7 +49,8 @@ void sort_particles(DiscreteSystem<D, Shape>& system) {
   const std::size_t key_count = layout.block_count * cells_per_block;
 
   std::vector<char> occupied(layout.block_count, 0);
-  for (auto& batch : system.batches) {
+  for (std::size_t bi = 0; bi < system.batches.size(); ++bi) {
+    auto& batch = system.batches[bi];
     const std::size_t n = batch.size();
     // key = block * B^D + cell inside the block (x fastest)
     std::vector<std::uint32_t> key(n);
@@ -63,6 +79,7 @@ void sort_particles(DiscreteSystem<D, Shape>& system) {
       }
     }
     batch.for_each_column([&](const char*, auto& column) { detail::permute(column, order); });
+    detail::renumber_loaded_faces(system.loads.surface, static_cast<int>(bi), order);
   }
 
   layout.occupied.clear();

@@ -29,6 +29,9 @@ struct ParticleBatch {
   int material = 0;  // index into SystemSpec::materials
   double particle_length = 0.0;  // initial particle size (m), see MaterialInput::length
   Vec<D> half_width = Vec<D>::Zero();  // initial half-width per axis, in cells (uGIMP)
+  // Body force per unit mass on these particles during the step: gravity
+  // plus their body's body force at the step's start (m/s^2), set by p2g.
+  Vec<D> acceleration = Vec<D>::Zero();
   std::vector<Vec<D>> x, v;                // m, m/s
   std::vector<Vec<D>> x0;                  // initial positions, only when a reference needs them
   std::vector<double> mass, volume;        // kg, m^3

@@ -10,6 +10,11 @@
 
 #include "core/time_function.hpp"
 #include "core/vec.hpp"
+#include "discretisation/body_shape.hpp"
+#include "discretisation/external_loads.hpp"
+#include "discretisation/initial_stress.hpp"
+#include "discretisation/loads.hpp"
+#include "discretisation/particle_list.hpp"
 #include "materials/material.hpp"
 
 namespace flowmpm {
@@ -22,10 +27,19 @@ struct GridSpec {
 
 struct BodySpec {
   std::string name;
-  int material = 0;           // index into SystemSpec::materials
-  Vec3 box_min{}, box_max{};  // the box filled with particles
-  Vec3 spacing{};             // particle spacing per axis (m)
-  Vec3 velocity{};            // initial velocity (m/s)
+  std::string where;  // "file:line: bodies[k]", for messages once the case is read
+  int material = 0;   // index into SystemSpec::materials
+  // The particles: the points of the lattice at `spacing` (m per axis)
+  // inside `shape` (lattice.hpp), or, when given, `particles` (from a file).
+  BodyShape shape;
+  Vec3 spacing{};
+  std::optional<ParticleList> particles;
+  Vec3 velocity{};  // initial velocity (m/s)
+  // Initial stress (Pa); particles from a file may carry their own instead.
+  std::optional<InitialStressVariant> initial_stress;
+  // Bodies (indices into SystemSpec::bodies) that lose their particles
+  // where they overlap this one; any other overlap is an error.
+  std::vector<int> wins_over;
   // Rotation of the material axes (degrees) about z, y, x: R = Rz Ry Rx.
   Vec3 material_axes{};
   // Cylindrical material axes: each particle's angle about z gets
@@ -98,6 +112,8 @@ struct SystemSpec {
       if (transport(m.model).diffuses()) return true;
     return false;
   }
+  std::vector<Load> loads;          // README "Loads"
+  std::optional<Damping> damping;   // quasi-static damping, if any
 };
 
 }  // namespace flowmpm

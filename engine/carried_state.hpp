@@ -55,6 +55,8 @@ void visit_carried_state(System& s, F&& f) {
   f("work.gravity", s.work.gravity);
   f("work.boundary", s.work.boundary);
   f("work.expansion", s.work.expansion);
+  f("work.load", s.work.load);
+  f("damping.dissipated", s.damping_dissipated);
 }
 
 template <int D, class Shape>

@@ -33,12 +33,13 @@ struct Diagnostics {
   // per unit cross-section in 1D).
   double kinetic_energy = 0.0;
   double stored_energy = 0.0;      // the materials' recoverable energy
-  double dissipated_energy = 0.0;  // plastic work, damage
+  double dissipated_energy = 0.0;  // plastic work, damage, damping
   WorkDone work;                   // done on the bodies since t = 0
   // kinetic + stored + dissipated - the work done: constant but for the
   // scheme's error.
   double energy_balance() const {
-    return kinetic_energy + stored_energy + dissipated_energy - work.gravity - work.boundary - work.expansion;
+    return kinetic_energy + stored_energy + dissipated_energy - work.gravity - work.boundary - work.expansion -
+           work.load;
   }
   std::vector<BodyMeans> bodies;     // per body of the spec
   std::vector<Reaction> reactions;   // per constrained node set and axis
@@ -77,6 +78,7 @@ Diagnostics diagnostics(const DiscreteSystem<D, Shape>& system, std::size_t body
         },
         system.materials[b.material]);
   }
+  row.dissipated_energy += system.damping_dissipated;
   row.work = system.work;
   for (const NodeConstraint& c : system.constraints) row.reactions.push_back({c.name, c.axis, c.reaction});
   for (std::size_t i = 0; i < body_count; ++i) {

@@ -1,10 +1,12 @@
 // The energy balance of a run (README "Energy balance"):
-//   kinetic + stored + dissipated - W_gravity - W_boundary - W_expansion
+//   kinetic + stored + dissipated - W_gravity - W_boundary - W_expansion - W_load
 // stays at its initial value, where stored and dissipated are the
-// materials' own (stored_energy, dissipated_energy) and the W are the work
-// done on the bodies since t = 0: by gravity (the fall of the potential
-// energy, sum m g . dx), by the velocity constraints' reactions (sum R V dt)
-// and by the expansion strains against the stress. What it does not keep
+// materials' own (stored_energy, dissipated_energy) plus what damping took
+// (tasks/grid_update.hpp), and the W are the work done on the bodies since
+// t = 0: by gravity and body forces (the fall of the potential energy,
+// sum m g_p . dx), by the velocity constraints' reactions (sum R V dt), by
+// the expansion strains against the stress, and by the tractions,
+// pressures and nodal forces (tasks/external_forces.hpp). What it does not keep
 // is the scheme's error: PIC's and FLIP's mapping losses, the time
 // integration, and a blow-up.
 // The per-step sums come from the particles' blocks, added in block order:
@@ -32,6 +34,10 @@ void add_step_energy(DiscreteSystem<D, Shape>& system) {
   system.kinetic_energy = kinetic;
   system.work.boundary = 0.0;
   for (const NodeConstraint& c : system.constraints) system.work.boundary += c.work;
+  for (const SurfaceLoad<D>& load : system.loads.surface) {
+    const ParticleBatch<D>& b = system.batches[load.batch];
+    for (const LoadedFace<D>& f : load.faces) system.work.load += f.force.dot(b.x[f.particle] + f.offset - f.at);
+  }
 }
 
 // The blow-up guard's budget: a run cannot have more kinetic energy than
@@ -47,7 +53,8 @@ class EnergyBudget {
 
   // The most kinetic energy allowed after a step with the work `w` done so far.
   double limit(const WorkDone& w) {
-    largest_ = std::max(largest_, initial_ + std::abs(w.gravity) + std::abs(w.boundary) + std::abs(w.expansion));
+    largest_ = std::max(largest_, initial_ + std::abs(w.gravity) + std::abs(w.boundary) + std::abs(w.expansion) +
+                                      std::abs(w.load));
     return factor_ * (largest_ + floor_);
   }
   double factor() const { return factor_; }

@@ -38,9 +38,18 @@ inline StableStep stable_time_step(const SystemSpec& spec, const Scheme& scheme)
     const double dt = h_min / wave_speed(m.model);
     if (dt < s.crossing) s.crossing = dt, s.material = m.name;
   }
-  for (const BodySpec& body : spec.bodies)
-    for (int d = 0; d < spec.dimension; ++d)
-      s.particles_per_cell = std::max(s.particles_per_cell, spec.grid.cell_size[d] / body.spacing[d]);
+  for (const BodySpec& body : spec.bodies) {
+    // Particles from a file: the mean particle's size V^(1/D) as their spacing.
+    double file_spacing = 0.0;
+    if (body.particles) {
+      for (const double v : body.particles->volume) file_spacing += v;
+      file_spacing = std::pow(file_spacing / static_cast<double>(body.particles->size()), 1.0 / spec.dimension);
+    }
+    for (int d = 0; d < spec.dimension; ++d) {
+      const double spacing = body.particles ? file_spacing : body.spacing[d];
+      s.particles_per_cell = std::max(s.particles_per_cell, spec.grid.cell_size[d] / spacing);
+    }
+  }
   const int i = std::clamp(static_cast<int>(std::ceil(s.particles_per_cell - 1e-9)), 1, 4) - 1;
   s.factor = stability_margin * with_shape_function(spec.shape_function, [&]<class Shape>() {
                return scheme.wiring.stress_from_updated_grid()

@@ -16,6 +16,7 @@
 #include "engine/take_snapshot.hpp"
 #include "io/case_reader.hpp"
 #include "io/digest.hpp"
+#include "io/particle_file.hpp"
 
 namespace flowmpm {
 namespace {
@@ -202,9 +203,79 @@ double grid_max(const SystemSpec& c, int d) {
   return c.grid.origin[d] + c.grid.cell_size[d] * c.grid.cells[d];
 }
 
-void read_body(TableReader t, SystemSpec& c, std::size_t index) {
+// The spacing of a body filled on a lattice: particles_per_cell (per axis)
+// or spacing (m, one or one per axis).
+Vec3 read_spacing(TableReader& t, const SystemSpec& c, const BoxShape& bounds) {
+  if (t.has("particles_per_cell") == t.has("spacing")) {
+    t.fail_table("give exactly one of particles_per_cell (per axis) and spacing (m)");
+  }
+  Vec3 spacing{};
+  if (t.has("particles_per_cell")) {
+    const std::int64_t n = t.integer("particles_per_cell");
+    t.require(n >= 1 && n <= 16, "particles_per_cell", "1 to 16 particles per cell per axis");
+    for (int d = 0; d < c.dimension; ++d) spacing[d] = c.grid.cell_size[d] / static_cast<double>(n);
+  } else {
+    spacing = per_axis(t, "spacing", c.dimension);
+    for (int d = 0; d < c.dimension; ++d) {
+      t.require(spacing[d] > 0.0 && spacing[d] <= bounds.max[d] - bounds.min[d], "spacing",
+                "a positive particle spacing no larger than the body, in m");
+    }
+  }
+  return spacing;
+}
+
+// A body's particles: a box (min, max), a shape table, or a particle file.
+void read_body_particles(TableReader& t, SystemSpec& c, BodySpec& b, const std::filesystem::path& case_file) {
+  const int sources = (t.has("min") || t.has("max") ? 1 : 0) + (t.has("shape") ? 1 : 0) + (t.has("particles") ? 1 : 0);
+  if (sources != 1) {
+    t.fail_table("give the body's particles by exactly one of a box (min, max), a shape table (shape) or a particle "
+                 "file (particles)");
+  }
+  if (t.has("particles")) {
+    std::filesystem::path file = t.string("particles");
+    if (file.is_relative()) file = case_file.parent_path() / file;
+    try {
+      b.particles = read_particle_file(file, c.dimension);
+    } catch (const CaseError& e) {
+      throw CaseError(t.where("particles") + ": " + e.what());
+    }
+    for (const char* key : {"particles_per_cell", "spacing"}) {
+      if (t.has(key)) t.fail(key, "no lattice spacing for particles from a file (each has its volume)");
+    }
+    return;
+  }
+  if (t.has("shape")) {
+    t.read_table("shape", [&](ParameterTable& shape) { b.shape = BodyShape::read(shape, {c.dimension}); });
+    const BoxShape bounds = b.shape.bounds();
+    for (int d = 0; d < c.dimension; ++d) {
+      const double tol = 1e-9 * c.grid.cell_size[d];
+      t.require(bounds.min[d] >= c.grid.origin[d] - tol && bounds.max[d] <= grid_max(c, d) + tol, "shape",
+                "a shape inside the grid: " + readable_text(c.grid.origin[d]) + " <= " + axis_names[d] +
+                    " <= " + readable_text(grid_max(c, d)) + " (its bounds reach " + readable_text(bounds.min[d]) +
+                    " to " + readable_text(bounds.max[d]) + ")");
+    }
+  } else {
+    BoxShape box{vector_of(t, "min", c.dimension), vector_of(t, "max", c.dimension)};
+    if (!t.has("min")) t.fail("min", "the lower corner of the body's box in m");
+    if (!t.has("max")) t.fail("max", "the upper corner of the body's box in m");
+    for (int d = 0; d < c.dimension; ++d) {
+      t.require(box.min[d] < box.max[d], "max", "a corner above min along every axis");
+      const double tol = 1e-9 * c.grid.cell_size[d];
+      t.require(box.min[d] >= c.grid.origin[d] - tol, "min",
+                "a box inside the grid: " + std::string(axis_names[d]) + " >= " + readable_text(c.grid.origin[d]));
+      t.require(box.max[d] <= grid_max(c, d) + tol, "max",
+                "a box inside the grid: " + std::string(axis_names[d]) + " <= " + readable_text(grid_max(c, d)));
+    }
+    b.shape = BodyShape{box};
+  }
+  b.spacing = read_spacing(t, c, b.shape.bounds());
+}
+
+void read_body(TableReader t, SystemSpec& c, std::size_t index, const std::filesystem::path& case_file,
+               std::vector<std::string>& wins_over) {
   BodySpec b;
   b.name = t.string_or("name", "body" + std::to_string(index));
+  b.where = t.where("");
   const std::string material = t.string("material");
   b.material = -1;
   std::string known;
@@ -213,35 +284,12 @@ void read_body(TableReader t, SystemSpec& c, std::size_t index) {
     known += (known.empty() ? "\"" : ", \"") + c.materials[m].name + "\"";
   }
   if (b.material < 0) t.fail("material", "the name of a material in [materials]: " + known);
-  b.box_min = vector_of(t, "min", c.dimension);
-  b.box_max = vector_of(t, "max", c.dimension);
-  if (!t.has("min")) t.fail("min", "the lower corner of the body's box in m");
-  if (!t.has("max")) t.fail("max", "the upper corner of the body's box in m");
-  for (int d = 0; d < c.dimension; ++d) {
-    t.require(b.box_min[d] < b.box_max[d], "max", "a corner above min along every axis");
-    const double tol = 1e-9 * c.grid.cell_size[d];
-    t.require(b.box_min[d] >= c.grid.origin[d] - tol, "min",
-              "a box inside the grid: " + std::string(axis_names[d]) + " >= " + readable_text(c.grid.origin[d]));
-    t.require(b.box_max[d] <= grid_max(c, d) + tol, "max",
-              "a box inside the grid: " + std::string(axis_names[d]) + " <= " + readable_text(grid_max(c, d)));
-  }
-  if (t.has("particles_per_cell") == t.has("spacing")) {
-    t.fail_table("give exactly one of particles_per_cell (per axis) and spacing (m)");
-  }
-  if (t.has("particles_per_cell")) {
-    const std::int64_t n = t.integer("particles_per_cell");
-    t.require(n >= 1 && n <= 16, "particles_per_cell", "1 to 16 particles per cell per axis");
-    for (int d = 0; d < c.dimension; ++d) b.spacing[d] = c.grid.cell_size[d] / static_cast<double>(n);
-  } else {
-    b.spacing = per_axis(t, "spacing", c.dimension);
-    for (int d = 0; d < c.dimension; ++d) {
-      t.require(b.spacing[d] > 0.0 && b.spacing[d] <= b.box_max[d] - b.box_min[d], "spacing",
-                "a positive particle spacing no larger than the box, in m");
-    }
-  }
+  read_body_particles(t, c, b, case_file);
   b.velocity = vector_of(t, "velocity", c.dimension);
+  const bool file_axes = b.particles && !b.particles->material_axes.empty();
   if (t.has("material_axes")) {
     t.require(c.dimension > 1, "material_axes", "no material axes in 1D");
+    t.require(!file_axes, "material_axes", "no material_axes where the particle file gives them per particle");
     // 2D: one angle about z; 3D: angles about z, y and x (R = Rz Ry Rx).
     b.material_axes = vector_of(t, "material_axes", c.dimension == 2 ? 1 : 3);
   }
@@ -271,8 +319,37 @@ void read_body(TableReader t, SystemSpec& c, std::size_t index) {
     t.require(b.concentration >= 0.0 && b.concentration <= 1.0, "concentration",
               "an initial solvent concentration (weight fraction) in [0, 1]");
   }
+  if (t.has("initial_stress")) {
+    t.require(!(b.particles && !b.particles->stress.empty()), "initial_stress",
+              "no initial_stress where the particle file gives the stress per particle");
+    t.read_table("initial_stress", [&](ParameterTable& s) {
+      b.initial_stress = InitialStresses::read(s, "type", InitialStressContext{c.dimension, c.plane_stress, c.gravity});
+    });
+  }
+  if (t.has("wins_over")) wins_over = t.strings("wins_over");
   t.reject_unknown_keys();
-  c.bodies.push_back(b);
+  c.bodies.push_back(std::move(b));
+}
+
+// Resolves each body's wins_over names once every body is known.
+void resolve_wins_over(std::vector<TableReader>& tables, SystemSpec& c,
+                       const std::vector<std::vector<std::string>>& names) {
+  std::string known;
+  for (const BodySpec& b : c.bodies) known += (known.empty() ? "\"" : ", \"") + b.name + "\"";
+  for (std::size_t i = 0; i < c.bodies.size(); ++i) {
+    for (const std::string& name : names[i]) {
+      const auto it = std::ranges::find_if(c.bodies, [&](const BodySpec& b) { return b.name == name; });
+      const int other = static_cast<int>(it - c.bodies.begin());
+      if (it == c.bodies.end() || other == static_cast<int>(i)) {
+        tables[i].fail("wins_over", "names of other bodies among " + known);
+      }
+      if (std::ranges::find(c.bodies[other].wins_over, static_cast<int>(i)) != c.bodies[other].wins_over.end()) {
+        tables[i].fail("wins_over", "one winner per pair of bodies, but \"" + name + "\" wins over \"" +
+                                        c.bodies[i].name + "\" too");
+      }
+      c.bodies[i].wins_over.push_back(other);
+    }
+  }
 }
 
 // A prescribed temperature (K, > 0) or concentration (in [0, 1]) as a
@@ -318,9 +395,6 @@ void read_node_set(TableReader t, SystemSpec& c, std::size_t index) {
   }
   s.temperature = transport_condition(t, "temperature", c.conducts_heat());
   s.concentration = transport_condition(t, "concentration", c.diffuses_solvent());
-  if (!s.temperature && !s.concentration && !t.has("velocity")) {
-    t.fail("velocity", "what the node set prescribes: velocity = { x = ... }, temperature or concentration");
-  }
   if (t.has("velocity")) {
     TableReader v = t.table("velocity");
     for (int d = 0; d < c.dimension; ++d) {
@@ -390,6 +464,35 @@ void check_transport(std::vector<TableReader>& materials, const SystemSpec& c) {
       }
     }
   }
+}
+
+void read_load(TableReader t, SystemSpec& c) {
+  LoadReadContext context{c.dimension, {}, {}, {}};
+  for (const BodySpec& b : c.bodies) {
+    context.body_names.push_back(b.name);
+    context.body_has_shape.push_back(!b.particles);
+  }
+  for (const NodeSetSpec& s : c.node_sets) context.node_set_names.push_back(s.name);
+  c.loads.push_back(Loads::read(t, "type", context));
+  t.reject_unknown_keys();
+}
+
+// Each coefficient a number or [[t, value], ...]; at least one of them.
+void read_damping(TableReader t, SystemSpec& c) {
+  Damping damping;
+  if (!t.has("local") && !t.has("viscous")) t.fail_table("give local (alpha, -) and/or viscous (c, 1/s) damping");
+  if (t.has("local")) {
+    damping.local = t.time_function("local", "a local damping coefficient alpha in [0, 1)");
+    for (const auto& [time, alpha] : damping.local.points)
+      t.require(alpha >= 0.0 && alpha < 1.0, "local", "local damping coefficients alpha in [0, 1)");
+  }
+  if (t.has("viscous")) {
+    damping.viscous = t.time_function("viscous", "a viscous damping coefficient c in 1/s");
+    for (const auto& [time, coefficient] : damping.viscous.points)
+      t.require(coefficient >= 0.0, "viscous", "viscous damping coefficients c >= 0 in 1/s");
+  }
+  t.reject_unknown_keys();
+  c.damping = std::move(damping);
 }
 
 void read_output(TableReader t, Case& c) {
@@ -467,13 +570,17 @@ Case read_case(const std::filesystem::path& file, const std::vector<std::string>
   if (c.system.materials.empty()) materials.fail_table("define at least one material, e.g. [materials.steel]");
   check_transport(material_tables, c.system);
 
-  const auto bodies = t.tables("bodies");
+  auto bodies = t.tables("bodies");
   if (bodies.empty()) t.fail("bodies", "at least one [[bodies]] table");
-  for (std::size_t i = 0; i < bodies.size(); ++i) read_body(bodies[i], c.system, i);
+  std::vector<std::vector<std::string>> wins_over(bodies.size());
+  for (std::size_t i = 0; i < bodies.size(); ++i) read_body(bodies[i], c.system, i, file, wins_over[i]);
+  resolve_wins_over(bodies, c.system, wins_over);
   const auto node_sets = t.tables("node_sets");
   for (std::size_t i = 0; i < node_sets.size(); ++i) read_node_set(node_sets[i], c.system, i);
   const auto fluxes = t.tables("surface_fluxes");
   for (std::size_t i = 0; i < fluxes.size(); ++i) read_surface_flux(fluxes[i], c.system, i);
+  for (TableReader& load : t.tables("loads")) read_load(load, c.system);
+  if (t.has("damping")) read_damping(t.table("damping"), c.system);
   if (t.has("reference")) {
     TableReader r = t.table("reference");
     c.reference = Reference::read(r, {c.system, c.end_time});
@@ -510,18 +617,29 @@ Case read_case(const std::filesystem::path& file, const std::vector<std::string>
   c.system.dt = c.dt;
   if (!limits.diffusion) {
     if (c.dt > stable.dt()) analysis.fail("dt", "a time step no larger than the stable limit " + limit);
-    return c;
+  } else {
+    const DiffusionStep& diffusion = *limits.diffusion;
+    const std::string diffusion_limit = "the " + diffusion.field + " diffusion limit 1 / (2 kappa sum_d 1/h_d^2) = " +
+                                        readable_text(diffusion.dt) + " s (" + diffusion.field + " diffusivity " +
+                                        readable_text(diffusion.diffusivity) + " m^2/s of material \"" +
+                                        diffusion.material + "\")";
+    const std::string wave_limit = "the wave limit " + limit;
+    if (c.dt > limits.dt()) {
+      analysis.fail("dt", "a time step no larger than the stable limit " + readable_text(limits.dt()) + " s: " +
+                              (limits.diffusion_governs() ? diffusion_limit + " governs; " + wave_limit
+                                                          : wave_limit + " governs; " + diffusion_limit));
+    }
   }
-  const DiffusionStep& diffusion = *limits.diffusion;
-  const std::string diffusion_limit = "the " + diffusion.field + " diffusion limit 1 / (2 kappa sum_d 1/h_d^2) = " +
-                                      readable_text(diffusion.dt) + " s (" + diffusion.field + " diffusivity " +
-                                      readable_text(diffusion.diffusivity) + " m^2/s of material \"" +
-                                      diffusion.material + "\")";
-  const std::string wave_limit = "the wave limit " + limit;
-  if (c.dt > limits.dt()) {
-    analysis.fail("dt", "a time step no larger than the stable limit " + readable_text(limits.dt()) + " s: " +
-                            (limits.diffusion_governs() ? diffusion_limit + " governs; " + wave_limit
-                                                        : wave_limit + " governs; " + diffusion_limit));
+  // The viscous damping's share of the update, v (1 - c dt), must not
+  // reverse the velocity.
+  if (c.system.damping) {
+    for (const auto& [time, coefficient] : c.system.damping->viscous.points) {
+      if (coefficient * c.dt > 1.0) {
+        TableReader damping = t.table("damping");
+        damping.fail("viscous", "a viscous damping coefficient c with c dt <= 1 (c <= " + readable_text(1.0 / c.dt) +
+                                    " 1/s at dt = " + readable_text(c.dt) + " s)");
+      }
+    }
   }
   return c;
 }

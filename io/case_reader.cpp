@@ -189,6 +189,25 @@ TimeFunction TableReader::time_function(std::string_view key, std::string_view w
   return f;
 }
 
+void TableReader::read_table(std::string_view key, const std::function<void(ParameterTable&)>& read) {
+  TableReader sub = table(key);
+  read(sub);
+  sub.reject_unknown_keys();
+}
+
+void TableReader::read_tables(std::string_view key, const std::function<void(ParameterTable&)>& read) {
+  for (TableReader& sub : tables(key)) {
+    read(sub);
+    sub.reject_unknown_keys();
+  }
+}
+
+std::string TableReader::where(std::string_view key) const {
+  if (key.empty()) return source_of(*table_, file_) + ": " + (path_.empty() ? "case" : path_);
+  const toml::node* n = table_->get(key);
+  return (n ? location(*n, key) : source_of(*table_, file_)) + ": " + dotted(key);
+}
+
 TableReader TableReader::table(std::string_view key) {
   const toml::node& n = required(key);
   if (!n.is_table()) fail_at(n, key, "a table");

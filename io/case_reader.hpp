@@ -41,6 +41,9 @@ class TableReader : public ParameterTable {
                      std::string_view fallback = {}) override;
   std::vector<double> numbers(std::string_view key, std::size_t count) override;
   TimeFunction time_function(std::string_view key, std::string_view what) override;
+  void read_table(std::string_view key, const std::function<void(ParameterTable&)>& read) override;
+  void read_tables(std::string_view key, const std::function<void(ParameterTable&)>& read) override;
+  std::string where(std::string_view key) const override;
 
   std::vector<std::string> strings(std::string_view key);
 

@@ -53,7 +53,9 @@ std::string summary_json(const RunSummary& s) {
   field("gravity_work", number(s.gravity_work));
   field("boundary_work", number(s.boundary_work));
   field("expansion_work", number(s.expansion_work));
+  field("load_work", number(s.load_work));
   field("energy_error", number(s.energy_error));
+  if (s.damping_dissipated) field("damping_dissipated", number(*s.damping_dissipated));
 
   out += "  \"bodies\": [";
   for (std::size_t i = 0; i < s.bodies.size(); ++i) {
@@ -67,15 +69,23 @@ std::string summary_json(const RunSummary& s) {
   }
   out += s.bodies.empty() ? "],\n" : "\n  ],\n";
 
-  out += "  \"errors\": {";
-  bool first = true;
-  for (const auto& [name, value] : s.errors) {
-    out += first ? "\n" : ",\n";
-    out += "    " + quoted_string(name) + ": " + number(value);
-    first = false;
+  // {"name": value, ...}, one per line.
+  const auto object = [&out](const char* key, const std::map<std::string, double>& values) {
+    out += std::string("  \"") + key + "\": {";
+    bool first = true;
+    for (const auto& [name, value] : values) {
+      out += first ? "\n" : ",\n";
+      out += "    " + quoted_string(name) + ": " + number(value);
+      first = false;
+    }
+    out += values.empty() ? "}" : "\n  }";
+  };
+  object("errors", s.errors);
+  if (!s.measures.empty()) {
+    out += ",\n";
+    object("measures", s.measures);
   }
-  out += s.errors.empty() ? "}\n" : "\n  }\n";
-  return out + "}\n";
+  return out + "\n}\n";
 }
 
 void write_summary(const std::filesystem::path& path, const RunSummary& summary) {

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <limits>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,11 +35,17 @@ struct RunSummary {
   // and its error: the largest change of the balance over the recorded
   // steps relative to the largest energy present (NaN without energy).
   double kinetic_energy = 0.0, stored_energy = 0.0, dissipated_energy = 0.0;
-  double gravity_work = 0.0, boundary_work = 0.0, expansion_work = 0.0;
+  double gravity_work = 0.0, boundary_work = 0.0, expansion_work = 0.0, load_work = 0.0;
   double energy_error = 0.0;
+  // With damping: the energy it removed (J, >= 0; per unit thickness in 2D),
+  // part of dissipated_energy (README "Damping").
+  std::optional<double> damping_dissipated;
   std::vector<BodySummary> bodies;
   // Error norms against a reference solution, by name (empty without one).
   std::map<std::string, double> errors;
+  // What a reference measures without a closed form to compare with
+  // (README "Verification"), by name; empty without one.
+  std::map<std::string, double> measures;
 };
 
 // The JSON text (pretty-printed, numbers with 17 significant digits,

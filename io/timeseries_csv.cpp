@@ -25,7 +25,7 @@ namespace {
 std::string header_of(const std::vector<std::string>& body_names, const std::vector<std::string>& reactions,
                       const std::vector<std::string>& error_names) {
   std::string header =
-      "step,time,kinetic_energy,stored_energy,dissipated_energy,gravity_work,boundary_work,expansion_work,"
+      "step,time,kinetic_energy,stored_energy,dissipated_energy,gravity_work,boundary_work,expansion_work,load_work,"
       "energy_balance_error";
   for (const std::string& name : body_names)
     for (const char* quantity : {".stress_", ".strain_"})
@@ -118,7 +118,7 @@ void TimeseriesCsv::write(const Diagnostics& row, double balance_error, const st
     append_exact(line, value);
   };
   for (const double value : {row.time, row.kinetic_energy, row.stored_energy, row.dissipated_energy,
-                             row.work.gravity, row.work.boundary, row.work.expansion, balance_error})
+                             row.work.gravity, row.work.boundary, row.work.expansion, row.work.load, balance_error})
     add(value);
   for (const BodyMeans& body : row.bodies)
     for (const auto* values : {&body.stress, &body.strain})

@@ -224,7 +224,7 @@ void g2p(DiscreteSystem<D, Shape>& system) {
                                                  : ", more than one cell in one step"));
             continue;
           }
-          energy.gravity_work += b.mass[p] * system.gravity.dot(x_new - b.x[p]);
+          energy.gravity_work += b.mass[p] * b.acceleration.dot(x_new - b.x[p]);
           energy.kinetic += 0.5 * b.mass[p] * v_new.squaredNorm();
           b.v[p] = v_new;
           b.x[p] = x_new;

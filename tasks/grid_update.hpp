@@ -1,10 +1,15 @@
 // Grid stages (README "How a step runs"). grid_velocity: v_I = p_I / m_I
 // (0 on empty nodes), then the prescribed velocities (p_I follows).
-// grid_integrate: p_I += f_I dt, v_I^new = p_I / m_I (but see held_node),
-// prescribed velocities at t + dt, dv_I = v_I^new - v_I for the FLIP update,
+// grid_integrate: the external forces added (tasks/external_forces.hpp),
+// p_I += (f_I + f_d) dt with f_d the damping force if the scene has damping,
+// v_I^new = p_I / m_I (but see held_node), prescribed velocities at t + dt, dv_I = v_I^new - v_I for the FLIP update,
 // and the constraints' reactions; v_I becomes v_I^new so that the stages
 // after it read the updated velocity.
 #pragma once
+#include <cmath>
+#include <vector>
+
+#include "tasks/external_forces.hpp"
 #include "tasks/parallel_blocks.hpp"
 
 namespace flowmpm {
@@ -111,23 +116,69 @@ bool held_node(const Grid<D>& grid, std::size_t n, double dt) {
   return false;
 }
 
+// p_I += (f_I + f_d) dt with the damping force (Damping), along each axis
+// the node is free along:
+//   f_d = -alpha |f_I| sign(v_I) - c m_I v_I,
+// v_I the velocity before the update. Its power f_d (v_I + v_I^new) / 2,
+// v_I^new = p_I / m_I (a held node's too), is the damping's share of the
+// grid's kinetic energy change; it is summed per slab of nodes and then over
+// the slabs in order, so the sum does not depend on the thread count.
+template <int D, class Shape>
+void integrate_damped(DiscreteSystem<D, Shape>& system) {
+  auto& grid = system.grid;
+  const Damping& damping = *system.damping;
+  const double dt = system.dt;
+  const double alpha = damping.local(system.t), c = damping.viscous(system.t);
+  const int first_slab = grid.active_lo[D - 1];
+  std::vector<double> slab_power(static_cast<std::size_t>(grid.active_hi[D - 1] - first_slab + 1), 0.0);
+  for_each_active_node(grid, [&](std::size_t n, const Index<D>& ijk) {
+    const double m = grid.mass[n];
+    const bool held = held_node<D, Shape>(grid, n, dt);
+    double power = 0.0;
+    for (int d = 0; d < D; ++d) {
+      const double v = grid.velocity[d][n];
+      grid.velocity_change[d][n] = v;  // v_I before the update
+      if (m <= 0.0) continue;
+      double f = grid.force[d][n], f_d = 0.0;
+      if (!((damping.undamped[n] >> d) & 1u)) {
+        f_d = -alpha * std::abs(f) * static_cast<double>((v > 0.0) - (v < 0.0)) - c * m * v;
+        f += f_d;
+      }
+      grid.momentum[d][n] += f * dt;
+      const double v_new = grid.momentum[d][n] / m;
+      if (!held) grid.velocity[d][n] = v_new;
+      power += f_d * 0.5 * (v + v_new);
+    }
+    slab_power[static_cast<std::size_t>(ijk[D - 1] - first_slab)] += power;
+  });
+  system.damping_power = 0.0;
+  for (const double p : slab_power) system.damping_power += p;
+  system.damping_dissipated -= system.damping_power * dt;
+}
+
 template <int D, class Shape>
 void grid_integrate(DiscreteSystem<D, Shape>& system) {
   auto& grid = system.grid;
   const double dt = system.dt;
+  add_external_forces(system);
   fold_mirror_planes(system, grid.force, false);
-  for_each_active_node(grid, [&](std::size_t n, const Index<D>&) {
-    const double m = grid.mass[n];
-    const bool held = held_node<D, Shape>(grid, n, dt);
-    for (int d = 0; d < D; ++d) {
-      grid.velocity_change[d][n] = grid.velocity[d][n];  // v_I before the update
-      if (m > 0.0) {
-        grid.momentum[d][n] += grid.force[d][n] * dt;
-        if (!held) grid.velocity[d][n] = grid.momentum[d][n] / m;
+  if (system.damping) {
+    integrate_damped(system);
+  } else {
+    for_each_active_node(grid, [&](std::size_t n, const Index<D>&) {
+      const double m = grid.mass[n];
+      const bool held = held_node<D, Shape>(grid, n, dt);
+      for (int d = 0; d < D; ++d) {
+        grid.velocity_change[d][n] = grid.velocity[d][n];  // v_I before the update
+        if (m > 0.0) {
+          grid.momentum[d][n] += grid.force[d][n] * dt;
+          if (!held) grid.velocity[d][n] = grid.momentum[d][n] / m;
+        }
       }
-    }
-  });
+    });
+  }
   apply_velocity_constraints(system, system.t + dt);
+  add_nodal_load_work(system);
   // dv_I for FLIP; a held node's is that of its momentum.
   for_each_active_node(grid, [&](std::size_t n, const Index<D>&) {
     const bool held = held_node<D, Shape>(grid, n, dt);

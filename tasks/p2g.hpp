@@ -1,8 +1,9 @@
 // Particle-to-grid stages (README "How a step runs"): p2g_momentum maps mass and momentum,
 // p2g_force the internal and body forces, to the nodes:
 //   m_I = sum_p N_Ip m_p,  p_I = sum_p N_Ip m_p v_p,
-//   f_I = sum_p ( -V_p sigma_p . dN_Ip + N_Ip m_p g ),
-// and with linear shape functions under USL the nodal stiffness
+//   f_I = sum_p ( -V_p sigma_p . dN_Ip + N_Ip m_p g_p ),
+// g_p gravity plus the body force of the particle's body (loads, at the
+// start of the step), and with linear shape functions under USL the nodal stiffness
 //   k_I = sum_p V_p M_p |dN_Ip|^2  (M the P-wave modulus; tasks/grid_update.hpp held_node).
 // In 1D and 2D only the in-plane block of sigma enters the force.
 // USL and MUSL map both from the same particle state, in one pass.
@@ -13,6 +14,16 @@
 namespace flowmpm {
 
 namespace detail {
+
+// Each batch's acceleration: gravity plus its body's body forces at t.
+template <int D, class Shape>
+void set_accelerations(DiscreteSystem<D, Shape>& system) {
+  for (auto& b : system.batches) b.acceleration = system.gravity;
+  for (const BodyForce& f : system.loads.body) {
+    for (int d = 0; d < D; ++d)
+      if (f.acceleration[d]) system.batches[f.batch].acceleration[d] += (*f.acceleration[d])(system.t);
+  }
+}
 
 // One pass over the particles: p2g_momentum, p2g_force or both, from one
 // stencil per particle. Each node sums its particles in the same order
@@ -29,7 +40,7 @@ void p2g(DiscreteSystem<D, Shape>& system) {
     }
     if constexpr (Stiffness) grid.stiffness[n] = 0.0;
   });
-  const Vec<D> g = system.gravity;
+  if constexpr (Force) set_accelerations(system);
   // P-wave modulus rho c^2 of each material, for the nodal stiffness.
   std::vector<double> modulus;
   if constexpr (Stiffness)
@@ -43,6 +54,7 @@ void p2g(DiscreteSystem<D, Shape>& system) {
     force[d] = grid.force[d].data();
   }
   scatter_by_colour(system, [&](ParticleBatch<D>& b, std::uint32_t first, std::uint32_t last, std::uint32_t) {
+    const Vec<D> g = b.acceleration;
     for (std::uint32_t p = first; p < last; ++p) {
       const Stencil<D, Shape, Force> s(grid, b.x[p], b.half_width);
       const double m = b.mass[p];

@@ -367,16 +367,16 @@ TEST_CASE("timeseries CSV: header, and rows that parse back exactly") {
     const std::vector<std::string> lines = split(read_text(path), '\n');
     REQUIRE(lines.size() == 2);
     const std::vector<std::string> header = split(lines[0], ',');
-    REQUIRE(header.size() == 9 + 2 * 12 + 2);
+    REQUIRE(header.size() == 10 + 2 * 12 + 2);
     CHECK(lines[0].rfind("step,time,kinetic_energy,stored_energy,dissipated_energy,gravity_work,boundary_work,"
-                         "expansion_work,energy_balance_error,block.stress_xx,"
+                         "expansion_work,load_work,energy_balance_error,block.stress_xx,"
                          "block.stress_yy,block.stress_zz,block.stress_yz,block.stress_xz,"
                          "block.stress_xy,block.strain_xx,",
                          0) == 0);
-    CHECK(header[20] == "block.strain_xy");
-    CHECK(header[21] == "ground.stress_xx");
-    CHECK(header[32] == "ground.strain_xy");
-    CHECK(header[33] == "reaction.base.y");
+    CHECK(header[21] == "block.strain_xy");
+    CHECK(header[22] == "ground.stress_xx");
+    CHECK(header[33] == "ground.strain_xy");
+    CHECK(header[34] == "reaction.base.y");
     CHECK(header.back() == "reaction.top.x");
 
     const std::vector<std::string> cells = split(lines[1], ',');
@@ -384,7 +384,7 @@ TEST_CASE("timeseries CSV: header, and rows that parse back exactly") {
     CHECK(cells[0] == "42");
     std::vector<double> expected = {row.time,          row.kinetic_energy, row.stored_energy,
                                     row.dissipated_energy, row.work.gravity, row.work.boundary,
-                                    row.work.expansion, balance_error};
+                                    row.work.expansion, row.work.load,  balance_error};
     for (const BodyMeans& body : row.bodies) {
       expected.insert(expected.end(), body.stress.begin(), body.stress.end());
       expected.insert(expected.end(), body.strain.begin(), body.strain.end());

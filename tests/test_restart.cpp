@@ -360,7 +360,7 @@ TEST_CASE("transport: temperature, concentration, their pending expansion and th
   // the energy balance, the swelling_slab reference's sums), and heat
   // conducted through a slab (slab_transport's sums).
   TempDir swelling("flowmpm_restart"), conduction("flowmpm_restart");
-  check_restart_matches(swelling, config_file("verification/swelling_bar.toml"), 1000);
+  check_restart_matches(swelling, config_file("verification/swelling_bar.toml"), 1500);
   CHECK(contains(read_text(swelling.path / "restarted" / "timeseries.csv"), "error.concentration"));
   check_restart_matches(conduction, config_file("verification/slab_conduction.toml"), 64);
 }

@@ -1,9 +1,11 @@
 // The analytical solution a case is measured against, chosen by the `type`
 // of its [reference] table (README "Verification"). Each solution reads and
 // checks its own keys, may set initial conditions, is sampled during the
-// run, reports named error norms for summary.json and sweeps, and lists
-// what its samples accumulate for checkpoints (visit_state). Adding one is
-// one new file and one line in the variant below.
+// run, reports named error norms for summary.json and sweeps, may report
+// named measures (quantities without a closed form to compare with, such
+// as a final length) for summary.json, and lists what its samples
+// accumulate for checkpoints (visit_state). Adding one is one new file and
+// one line in the variant below.
 #pragma once
 #include <cstdint>
 #include <map>
@@ -12,18 +14,26 @@
 
 #include "core/registry.hpp"
 #include "verification/axial_vibration.hpp"
+#include "verification/cantilever.hpp"
 #include "verification/column_self_weight.hpp"
+#include "verification/elastic_impact.hpp"
 #include "verification/elastic_wave.hpp"
+#include "verification/plate_with_hole.hpp"
 #include "verification/slab_transport.hpp"
 #include "verification/swelling_bending.hpp"
 #include "verification/swelling_slab.hpp"
+#include "verification/taylor_impact.hpp"
 #include "verification/thermal_stress.hpp"
+#include "verification/thick_cylinder.hpp"
 #include "verification/uniaxial_stress.hpp"
+#include "verification/uniform_stress.hpp"
 
 namespace flowmpm {
 
-using ReferenceSolution = std::variant<AxialVibration, ElasticWave, UniaxialStress, ColumnSelfWeight, SlabTransport,
-                                       ThermalStress, SwellingSlab, SwellingBending>;
+using ReferenceSolution =
+    std::variant<AxialVibration, ElasticWave, UniaxialStress, ColumnSelfWeight, SlabTransport, ThermalStress,
+                 SwellingSlab, SwellingBending, UniformStressReference, PlateWithHole, ThickCylinder, Cantilever,
+                 ElasticImpact, TaylorImpact>;
 using ReferenceSolutions = Registry<ReferenceSolution>;
 
 class Reference {
@@ -56,6 +66,18 @@ class Reference {
   template <class F>
   void visit_state(F&& f) {
     std::visit([&](auto& s) { s.visit_state(f); }, solution_);
+  }
+  // Empty for a solution without measures.
+  std::map<std::string, double> measures() const {
+    return std::visit(
+        [](const auto& s) -> std::map<std::string, double> {
+          if constexpr (requires { s.measures(); }) {
+            return s.measures();
+          } else {
+            return {};
+          }
+        },
+        solution_);
   }
 
  private:

@@ -29,6 +29,7 @@
 #include <cmath>
 #include <map>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -79,8 +80,12 @@ struct SwellingBending {
     const double nu_zx = -m->S_n(r.along, 2) / m->S_n(2, 2);
     const auto& beta = m->parameters.expansion.beta;
     r.eigenstrain_per_c = beta[r.along] + nu_zx * beta[2];
-    r.centre = 0.5 * (body.box_min[r.along] + body.box_max[r.along]);
-    r.half_length = 0.5 * (body.box_max[r.along] - body.box_min[r.along]);
+    if (body.particles || body.shape.type() != std::string_view("box")) {
+      t.fail("type", "a first body that is a box (the strip)");
+    }
+    const BoxShape box = body.shape.bounds();
+    r.centre = 0.5 * (box.min[r.along] + box.max[r.along]);
+    r.half_length = 0.5 * (box.max[r.along] - box.min[r.along]);
     return r;
   }
 
