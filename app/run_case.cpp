@@ -59,9 +59,10 @@ std::shared_ptr<spdlog::logger> run_logger(const std::optional<std::filesystem::
 }
 
 template <int D, class Shape>
-void log_system(spdlog::logger& log, const Case& c, const DiscreteSystem<D, Shape>& system, const Scheme& scheme) {
+void log_system(spdlog::logger& log, const Case& c, const DiscreteSystem<D, Shape>& system, const Scheme& scheme,
+                const Wiring& wiring) {
   log.info("model: {}D ({}), scheme {} [{}], shape function {}, velocity update {}{}", D,
-               stress_state_name(system.stress_state), scheme.label, scheme.wiring.describe(), Shape::name,
+               stress_state_name(system.stress_state), scheme.label, wiring.describe(), Shape::name,
                c.velocity_update,
                c.velocity_update == "blend" ? " (FLIP fraction " + std::to_string(system.flip_fraction) + ")" : "");
   std::string cells;
@@ -76,6 +77,10 @@ void log_system(spdlog::logger& log, const Case& c, const DiscreteSystem<D, Shap
                  wave_speed(m.model));
   }
   log.info("particle fields stored: {}", stored_fields(D));
+  if (system.nonlocal.active) {
+    log.info("nonlocal averages: over the initial positions (x0 stored), settled with the step's end by "
+             "nonlocal_settle");
+  }
   for (const auto& k : system.constraints) {
     log.info("node set '{}': {} nodes, velocity prescribed along {}", k.name, k.nodes.size(),
                  "xyz"[k.axis]);
@@ -113,7 +118,7 @@ RunSummary run(const Case& c, const RunOptions& options) {
                               options.log_to_console);
   log->info("case '{}' from {}, {} thread{}, output in {}", c.name, c.file.string(), options.threads,
             options.threads == 1 ? "" : "s", options.write_results ? dir.string() : "(none)");
-  log_system(*log, c, system, scheme);
+  log_system(*log, c, system, scheme, sim.graph().wiring());
 
   RunSummary summary;
   summary.case_name = c.name;
@@ -284,6 +289,10 @@ RunSummary run(const Case& c, const RunOptions& options) {
     throw;
   }
   finish("completed");
+  if (system.nonlocal.unsettled_steps > 0) {
+    log->warn("the nonlocal averages did not settle in {} of {} steps (tasks/nonlocal_settle.hpp): a softening band "
+              "as wide as its model allows; refine the grid", system.nonlocal.unsettled_steps, system.step);
+  }
   log->info("done: {} steps, {} particles, {:.3f} s in the step loop, {:.4g} particle-steps/s (set-up {:.3f} s, "
             "output {:.3f} s)",
             summary.steps, summary.particles, summary.step_loop_seconds, summary.particle_steps_per_second,
@@ -316,7 +325,7 @@ void describe_case(const Case& c) {
     const Scheme& scheme = scheme_named(c.scheme);
     Simulation<D, Shape> sim(c.system, scheme.wiring, c.dt_auto ? 0.0 : c.dt);
     if (c.reference) c.reference->initialise(sim.system());
-    log_system(*spdlog::default_logger(), c, sim.system(), scheme);
+    log_system(*spdlog::default_logger(), c, sim.system(), scheme, sim.graph().wiring());
   });
 }
 

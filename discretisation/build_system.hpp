@@ -1,6 +1,7 @@
 // Builds the DiscreteSystem of a SystemSpec: the grid, particles filling each
 // body's box at its spacing (one batch per body, of one material), velocity
-// constraints on node sets, then the first sort. Volumes are per unit
+// constraints on node sets, then the first sort and, if a model asks for
+// them, the nonlocal weights. Volumes are per unit
 // thickness in 2D and per unit cross-section in 1D. Throws CaseError naming
 // the spec's source and the body or node set for what only the built system
 // can tell (a body in the outermost cells, a node set with no node).
@@ -11,6 +12,7 @@
 #include <type_traits>
 
 #include "core/errors.hpp"
+#include "discretisation/nonlocal_average.hpp"
 #include "discretisation/particle_sort.hpp"
 #include "discretisation/system_spec.hpp"
 
@@ -183,6 +185,7 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
     }
   }
   sort_particles(system);
+  nonlocal_setup(system);
 }
 
 }  // namespace flowmpm

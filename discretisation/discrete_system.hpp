@@ -12,6 +12,7 @@
 #include "core/time_function.hpp"
 #include "discretisation/blocks.hpp"
 #include "discretisation/grid.hpp"
+#include "discretisation/nonlocal_bins.hpp"
 #include "discretisation/particles.hpp"
 #include "materials/material.hpp"
 #include "materials/stress_state.hpp"
@@ -85,6 +86,13 @@ struct DiscreteSystem {
   std::vector<MirrorPlane> mirror_planes;
   Vec<D> gravity = Vec<D>::Zero();
   double flip_fraction = 1.0;
+  // Nonlocal averages, only when a model asks for them
+  // (discretisation/nonlocal_average.hpp, tasks/nonlocal_settle.hpp).
+  struct Nonlocal {
+    bool active = false;
+    NonlocalBins<D> bins;
+    std::int64_t unsettled_steps = 0;  // steps whose averages did not settle
+  } nonlocal;
 
   double t = 0.0, dt = 0.0;  // time at the start of the step, time step (s)
   double max_speed_sq = 0.0;  // largest |v_p|^2 after the last step (m^2/s^2)

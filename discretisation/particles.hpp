@@ -3,6 +3,7 @@
 // memory are neighbours in space. Fields no part of the scene reads are not
 // stored (empty arrays).
 #pragma once
+#include <array>
 #include <cstdint>
 #include <variant>
 #include <vector>
@@ -22,6 +23,19 @@ struct StateArraysOf<std::variant<Models...>> {
 };
 using MaterialStates = StateArraysOf<Material>::type;
 
+// A particle as a step found it, kept by the stress update of a model that
+// asks for nonlocal averages, so that the update can be redone from the same
+// start with a new average (tasks/nonlocal_settle.hpp). Written for every
+// particle by each step's stress update before it is read, so the sort need
+// not permute it.
+template <int D>
+struct StepStart {
+  MaterialStates states;
+  std::vector<Voigt> stress, strain;
+  std::vector<double> volume;
+  std::vector<std::array<double, D * D>> L;  // the step's velocity gradient, row by row (1/s)
+};
+
 template <int D>
 struct ParticleBatch {
   int body = 0;      // index into SystemSpec::bodies
@@ -29,11 +43,17 @@ struct ParticleBatch {
   double particle_length = 0.0;  // initial particle size (m), see MaterialInput::length
   Vec<D> half_width = Vec<D>::Zero();  // initial half-width per axis, in cells (uGIMP)
   std::vector<Vec<D>> x, v;                // m, m/s
-  std::vector<Vec<D>> x0;                  // initial positions, only when a reference needs them
+  std::vector<Vec<D>> x0;                  // initial positions, only when a reference or an average needs them
   std::vector<double> mass, volume;        // kg, m^3
   std::vector<Voigt> stress, strain;       // Pa, -
   std::vector<std::uint32_t> id;           // made in this order at set-up: the output row
   MaterialStates states;                   // the model's internal variables
+  // Only for a model asking for nonlocal averages
+  // (discretisation/nonlocal_average.hpp): the average of the neighbours'
+  // sources at the end of the last step, the particle's own weight in it,
+  // and the particle as the step found it.
+  std::vector<double> nonlocal_others, nonlocal_self_weight;
+  StepStart<D> step_start;
 
   // Particles of block b are [block_begin[b], block_begin[b + 1]).
   std::vector<std::uint32_t> block_begin;
@@ -63,6 +83,8 @@ struct ParticleBatch {
     f("stress", self.stress);
     f("strain", self.strain);
     f("id", self.id);
+    f("nonlocal_others", self.nonlocal_others);
+    f("nonlocal_self_weight", self.nonlocal_self_weight);
     std::visit([&](auto& states) { f("state", states); }, self.states);
   }
 };

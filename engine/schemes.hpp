@@ -28,4 +28,9 @@ std::vector<std::string> scheme_names();
 // The scheme called `name`; throws std::invalid_argument listing the known ones.
 const Scheme& scheme_named(std::string_view name);
 
+// `wiring` with a nonlocal_settle node right after the node that runs
+// g2p_stress, before whatever followed it (tasks/nonlocal_settle.hpp): for
+// a scene whose models ask for nonlocal averages.
+Wiring with_nonlocal_settle(Wiring wiring);
+
 }  // namespace flowmpm

@@ -1,5 +1,7 @@
 // A running simulation: the DiscreteSystem, the step graph wired for a
-// scheme with each node's pass resolved once (tasks/stage_table.hpp), and
+// scheme (with nonlocal_settle after g2p_stress where a model asks for
+// nonlocal averages) with each node's pass resolved once
+// (tasks/stage_table.hpp), and
 // what the time loop and the writers read off it.
 #pragma once
 #include <algorithm>
@@ -12,6 +14,7 @@
 #include "core/errors.hpp"
 #include "discretisation/build_system.hpp"
 #include "engine/diagnostics.hpp"
+#include "engine/schemes.hpp"
 #include "engine/take_snapshot.hpp"
 #include "engine/step_graph.hpp"
 #include "tasks/stage_table.hpp"
@@ -27,8 +30,10 @@ class Simulation {
   // system().dt before every step.
   Simulation(const SystemSpec& spec, const Wiring& wiring, double fixed_dt,
              std::function<void(Stage)> observer = {})
-      : fixed_dt_(fixed_dt), observer_(std::move(observer)), graph_(wiring, [this](int node) { run_node(node); }) {
-    for (const StageGroup& group : wiring.nodes) passes_.push_back(stage_pass<D, Shape>(group));
+      : fixed_dt_(fixed_dt),
+        observer_(std::move(observer)),
+        graph_(asks_nonlocal(spec) ? with_nonlocal_settle(wiring) : wiring, [this](int node) { run_node(node); }) {
+    for (const StageGroup& group : graph_.wiring().nodes) passes_.push_back(stage_pass<D, Shape>(group));
     build_system(spec, system_);
   }
 

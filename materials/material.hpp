@@ -10,18 +10,21 @@
 //                                                    // recoverable energy per unit volume (J/m^3)
 //   double density() const;                          // kg/m^3
 //   double wave_speed() const;                       // fastest wave, m/s (stable dt)
-// and optionally named state variables for output (materials/state_variable.hpp).
+// and optionally named state variables for output (materials/state_variable.hpp)
+// and a nonlocal average of a state variable (materials/nonlocal_model.hpp).
 // `update` is pure apart from its outputs: stress, state, and for reduced
 // stress states the out-of-plane strain components of deps. The engine
 // dispatches on this variant once per particle batch, never per particle.
 // Adding a model is one new file and one line in the variant below.
 #pragma once
 #include <string>
+#include <type_traits>
 #include <variant>
 #include <vector>
 
 #include "core/registry.hpp"
 #include "materials/linear_elastic.hpp"
+#include "materials/nonlocal_model.hpp"
 #include "materials/orthotropic.hpp"
 #include "materials/strain_softening.hpp"
 #include "materials/transversely_isotropic.hpp"
@@ -49,6 +52,18 @@ inline double density(const Material& m) {
 }
 inline double wave_speed(const Material& m) {
   return std::visit([](const auto& model) { return model.wave_speed(); }, m);
+}
+// l (m) of a model asking for a nonlocal average, 0 for the others.
+inline double nonlocal_length(const Material& m) {
+  return std::visit(
+      [](const auto& model) -> double {
+        if constexpr (NonlocalModel<std::decay_t<decltype(model)>>) {
+          return model.nonlocal_length();
+        } else {
+          return 0.0;
+        }
+      },
+      m);
 }
 inline const char* type_name(const Material& m) { return Materials::name_of(m); }
 

@@ -3,7 +3,9 @@
 //             (a = 1 FLIP, a = 0 PIC), x_p <- x_p + dt sum_I N_Ip v_I,
 //             with v_I the velocity after grid_integrate.
 // g2p_stress: L_p = sum_I v_I (x) dN_Ip, d eps = sym(L_p) dt, the material
-//             update sigma(d eps), eps += d eps, V_p *= 1 + tr(d eps).
+//             update sigma(d eps), eps += d eps, V_p *= 1 + tr(d eps); a
+//             model asking for nonlocal averages gets them and keeps its
+//             start of step (tasks/nonlocal_settle.hpp).
 // USL does both in one pass over the particles, with N and dN at the
 // positions of the start of the step: the stencil of the step's p2g, as in
 // CB-Geo mpm. MUSL's g2p_stress follows the remap, so it and the remap see
@@ -34,6 +36,20 @@ template <int D, class Shape, StressState Kind, class MaterialModel>
   input.length = b.particle_length;
   for (int i = 0; i < D; ++i)
     for (int j = 0; j < D; ++j) input.dL(i, j) = L[i][j] * dt;
+  if constexpr (NonlocalModel<MaterialModel>) {
+    if (!b.nonlocal_others.empty()) {
+      input.nonlocal_others = b.nonlocal_others[p];
+      input.nonlocal_self_weight = b.nonlocal_self_weight[p];
+      // The start of the step, for tasks/nonlocal_settle.hpp to redo the update.
+      auto& kept = b.step_start;
+      std::get<StateArray<MaterialModel>>(kept.states)[p] = state;
+      kept.stress[p] = b.stress[p];
+      kept.strain[p] = b.strain[p];
+      kept.volume[p] = b.volume[p];
+      for (int i = 0; i < D; ++i)
+        for (int j = 0; j < D; ++j) kept.L[p][D * i + j] = L[i][j];
+    }
+  }
   material.template update<Kind>(state, b.stress[p], deps, input);
   if (!std::isfinite(b.stress[p][0] + b.stress[p][1] + b.stress[p][2] + b.stress[p][3] + b.stress[p][4] +
                      b.stress[p][5])) {

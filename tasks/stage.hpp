@@ -8,10 +8,22 @@
 
 namespace flowmpm {
 
-enum class Stage { p2g_momentum, p2g_force, grid_velocity, grid_integrate, g2p_motion, g2p_stress, remap };
+// nonlocal_settle is wired after g2p_stress only in a scene whose models ask
+// for nonlocal averages (tasks/nonlocal_settle.hpp).
+enum class Stage {
+  p2g_momentum,
+  p2g_force,
+  grid_velocity,
+  grid_integrate,
+  g2p_motion,
+  g2p_stress,
+  remap,
+  nonlocal_settle
+};
 
-inline constexpr std::array<const char*, 7> stage_names = {
-    "p2g_momentum", "p2g_force", "grid_velocity", "grid_integrate", "g2p_motion", "g2p_stress", "remap"};
+inline constexpr std::array<const char*, 8> stage_names = {"p2g_momentum", "p2g_force",  "grid_velocity",
+                                                           "grid_integrate", "g2p_motion", "g2p_stress",
+                                                           "remap",          "nonlocal_settle"};
 
 inline const char* stage_name(Stage s) { return stage_names[static_cast<std::size_t>(s)]; }
 

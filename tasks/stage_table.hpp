@@ -9,6 +9,7 @@
 
 #include "tasks/g2p.hpp"
 #include "tasks/grid_update.hpp"
+#include "tasks/nonlocal_settle.hpp"
 #include "tasks/p2g.hpp"
 #include "tasks/stage.hpp"
 
@@ -35,6 +36,7 @@ StagePass<D, Shape> stage_pass(const StageGroup& group) {
       {{Stage::g2p_motion, Stage::g2p_stress}, &g2p_motion_and_stress<D, Shape>},
       // MUSL: mass and momentum mapped again from the updated particles.
       {{Stage::remap}, &p2g_momentum<D, Shape>},
+      {{Stage::nonlocal_settle}, &nonlocal_settle<D, Shape>},
   };
   for (const Entry& e : table)
     if (e.stages == group) return e.pass;
