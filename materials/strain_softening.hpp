@@ -168,11 +168,14 @@ struct StrainSoftening {
     Voigt& e = state.eps;
     // At the start of the step (the rotation below keeps it).
     const double eps_a = nonlocal ? equivalent_strain<Kind>(e) : 0.0;
+    // eps_eq at the end of the step; lambda tr(eps) serves it and the stress.
+    double eps_b = 0.0, lambda_tr = 0.0;
     if constexpr (Kind == StressState::uniaxial_stress) {
       e[0] += deps[0];
       deps[1] = -nu * e[0] - e[1];
       deps[2] = -nu * e[0] - e[2];
       e[1] = e[2] = -nu * e[0];
+      eps_b = std::abs(e[0]);
     } else {
       rotate_with_spin(e, in.dL);
       if constexpr (Kind == StressState::plane_stress) {
@@ -180,8 +183,10 @@ struct StrainSoftening {
         deps[2] = e_zz - e[2];
       }
       for (int i = 0; i < 6; ++i) e[i] += deps[i];
+      const double tr = e[0] + e[1] + e[2];
+      lambda_tr = lambda * tr;
+      eps_b = std::sqrt((lambda_tr * tr + 2.0 * mu * double_contraction(e, e)) / E);
     }
-    const double eps_b = equivalent_strain<Kind>(e);
     if (nonlocal) {
       band_damage(state, eps_a, eps_b, in);
     } else {
@@ -192,8 +197,7 @@ struct StrainSoftening {
     if constexpr (Kind == StressState::uniaxial_stress) {
       sigma = {intact * E * e[0], 0.0, 0.0, 0.0, 0.0, 0.0};
     } else {
-      const double tr = e[0] + e[1] + e[2];
-      for (int i = 0; i < 3; ++i) sigma[i] = intact * (lambda * tr + 2.0 * mu * e[i]);
+      for (int i = 0; i < 3; ++i) sigma[i] = intact * (lambda_tr + 2.0 * mu * e[i]);
       for (int i = 3; i < 6; ++i) sigma[i] = intact * 2.0 * mu * e[i];
       if constexpr (Kind == StressState::plane_stress) sigma[2] = 0.0;  // round-off only
     }

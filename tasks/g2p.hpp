@@ -21,8 +21,11 @@ namespace flowmpm {
 
 namespace detail {
 
-// The material update of particle p for its velocity gradient L (g2p_stress).
-template <int D, class Shape, StressState Kind, class MaterialModel>
+// The material update of particle p for its velocity gradient L
+// (g2p_stress). Nonlocal: the model asks for nonlocal averages; the update
+// gets them, and the particle's start of step is kept for
+// tasks/nonlocal_settle.hpp to redo the update.
+template <int D, class Shape, StressState Kind, class MaterialModel, bool Nonlocal = false>
 [[gnu::always_inline]] inline void update_particle_stress(DiscreteSystem<D, Shape>& system, ParticleBatch<D>& b, std::size_t p,
                                                          const double (&L)[D][D], const MaterialModel& material,
                                                          typename MaterialModel::State& state) {
@@ -36,19 +39,16 @@ template <int D, class Shape, StressState Kind, class MaterialModel>
   input.length = b.particle_length;
   for (int i = 0; i < D; ++i)
     for (int j = 0; j < D; ++j) input.dL(i, j) = L[i][j] * dt;
-  if constexpr (NonlocalModel<MaterialModel>) {
-    if (!b.nonlocal_others.empty()) {
-      input.nonlocal_others = b.nonlocal_others[p];
-      input.nonlocal_self_weight = b.nonlocal_self_weight[p];
-      // The start of the step, for tasks/nonlocal_settle.hpp to redo the update.
-      auto& kept = b.step_start;
-      std::get<StateArray<MaterialModel>>(kept.states)[p] = state;
-      kept.stress[p] = b.stress[p];
-      kept.strain[p] = b.strain[p];
-      kept.volume[p] = b.volume[p];
-      for (int i = 0; i < D; ++i)
-        for (int j = 0; j < D; ++j) kept.L[p][D * i + j] = L[i][j];
-    }
+  if constexpr (Nonlocal) {
+    input.nonlocal_others = b.nonlocal_others[p];
+    input.nonlocal_self_weight = b.nonlocal_self_weight[p];
+    auto& kept = b.step_start;
+    std::get<StateArray<MaterialModel>>(kept.states)[p] = state;
+    kept.stress[p] = b.stress[p];
+    kept.strain[p] = b.strain[p];
+    kept.volume[p] = b.volume[p];
+    for (int i = 0; i < D; ++i)
+      for (int j = 0; j < D; ++j) kept.L[p][D * i + j] = L[i][j];
   }
   material.template update<Kind>(state, b.stress[p], deps, input);
   if (!std::isfinite(b.stress[p][0] + b.stress[p][1] + b.stress[p][2] + b.stress[p][3] + b.stress[p][4] +
@@ -60,8 +60,8 @@ template <int D, class Shape, StressState Kind, class MaterialModel>
 }
 
 // Calls f(update) with update(p, L) the material update of `b`'s particles:
-// one dispatch on the material and the stress state per call, none per
-// particle.
+// one dispatch on the material, the stress state and whether the batch asks
+// for nonlocal averages per call, none per particle.
 template <int D, class Shape, class F>
 void with_stress_update(DiscreteSystem<D, Shape>& system, ParticleBatch<D>& b, F&& f) {
   std::visit(
@@ -69,6 +69,14 @@ void with_stress_update(DiscreteSystem<D, Shape>& system, ParticleBatch<D>& b, F
         using M = std::decay_t<decltype(material)>;
         auto& states = std::get<StateArray<M>>(b.states);
         auto for_state = [&]<StressState Kind>() {
+          if constexpr (NonlocalModel<M>) {
+            if (!b.nonlocal_others.empty()) {
+              f([&](std::size_t p, const double(&L)[D][D]) {
+                update_particle_stress<D, Shape, Kind, M, true>(system, b, p, L, material, states[p]);
+              });
+              return;
+            }
+          }
           typename M::State no_state{};
           f([&](std::size_t p, const double(&L)[D][D]) {
             update_particle_stress<D, Shape, Kind>(system, b, p, L, material, states.empty() ? no_state : states[p]);
