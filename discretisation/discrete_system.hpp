@@ -7,6 +7,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "core/time_function.hpp"
@@ -91,6 +92,10 @@ struct DiscreteSystem {
   struct Nonlocal {
     bool active = false;
     NonlocalBins<D> bins;
+    // Per particle that has been a source, (batch << 32 | particle): the
+    // particles within the cut-off and their weights alpha, in a fixed
+    // order; dropped with the bins when the particles are re-sorted.
+    std::unordered_map<std::uint64_t, std::vector<NonlocalNeighbour>> neighbours;
     std::int64_t unsettled_steps = 0;  // steps whose averages did not settle
   } nonlocal;
 

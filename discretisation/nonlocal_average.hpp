@@ -15,7 +15,9 @@
 // and its own weight, nonlocal_self_weight = V_p / sum_q alpha_pq V_q, so
 // that its model can solve for its own source within the step. The sums run
 // serially in a fixed order (the same for any thread count); a step whose
-// sources are all 0 costs one pass over the particles.
+// sources are all 0 costs one pass over the particles. Each source's
+// neighbours and weights are found once and kept (the sources are the few
+// softening particles, their neighbours those within 4 l).
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -95,8 +97,11 @@ void nonlocal_setup(DiscreteSystem<D, Shape>& system) {
 template <int D, class Shape>
 void nonlocal_average(DiscreteSystem<D, Shape>& system, std::vector<std::vector<double>>& average) {
   auto& bins = system.nonlocal.bins;
-  if (bins.sorts != system.sorts)
-    bins = NonlocalBins<D>(system.batches, bins.size, system.sorts);  // the particles were re-sorted
+  auto& neighbours = system.nonlocal.neighbours;
+  if (bins.sorts != system.sorts) {  // the particles were re-sorted
+    bins = NonlocalBins<D>(system.batches, bins.size, system.sorts);
+    neighbours.clear();
+  }
   struct Source {
     int batch;
     std::uint32_t particle;
@@ -126,14 +131,20 @@ void nonlocal_average(DiscreteSystem<D, Shape>& system, std::vector<std::vector<
   for (std::size_t bi = 0; bi < system.batches.size(); ++bi)
     length[bi] = nonlocal_length(system.materials[system.batches[bi].material]);
   for (const Source& s : sources) {
-    const Vec<D>& xq = system.batches[s.batch].x0[s.particle];
-    bins.for_each_near(xq, [&](int pb, std::uint32_t p) {
-      const auto& b = system.batches[pb];
-      if (b.nonlocal_others.empty() || (pb == s.batch && p == s.particle)) return;
-      const double l = length[pb];
-      const double r2 = (b.x0[p] - xq).squaredNorm();
-      if (r2 < nonlocal_cutoff * nonlocal_cutoff * l * l) average[pb][p] += std::exp(-0.5 * r2 / (l * l)) * s.volume_source;
-    });
+    // The source's neighbours and their weights, found once.
+    auto [found, fresh] = neighbours.try_emplace(std::uint64_t{static_cast<std::uint32_t>(s.batch)} << 32 | s.particle);
+    std::vector<NonlocalNeighbour>& near = found->second;
+    if (fresh) {
+      const Vec<D>& xq = system.batches[s.batch].x0[s.particle];
+      bins.for_each_near(xq, [&](int pb, std::uint32_t p) {
+        const auto& b = system.batches[pb];
+        if (b.nonlocal_others.empty() || (pb == s.batch && p == s.particle)) return;
+        const double l = length[pb];
+        const double r2 = (b.x0[p] - xq).squaredNorm();
+        if (r2 < nonlocal_cutoff * nonlocal_cutoff * l * l) near.push_back({pb, p, std::exp(-0.5 * r2 / (l * l))});
+      });
+    }
+    for (const NonlocalNeighbour& n : near) average[n.batch][n.particle] += n.alpha * s.volume_source;
   }
   // Divided by the weight sum, V_p / self_weight.
   for (std::size_t bi = 0; bi < system.batches.size(); ++bi) {

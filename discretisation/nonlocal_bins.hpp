@@ -17,6 +17,13 @@
 
 namespace flowmpm {
 
+// A particle within the cut-off of another, and its weight alpha (-).
+struct NonlocalNeighbour {
+  int batch;
+  std::uint32_t particle;
+  double alpha;
+};
+
 template <int D>
 struct NonlocalBins {
   Vec<D> lo = Vec<D>::Zero();  // corner of the first bin (m)

@@ -1,7 +1,9 @@
 // A model whose update needs its neighbours (a nonlocal regularisation) may
-// declare both of
+// declare all of
 //   double nonlocal_length() const;              // l (m); 0: no average needed
 //   double nonlocal_source(const State&) const;  // the quantity averaged
+//   bool nonlocal_read(const State&) const;      // whether the update that
+//                                                // ended in this state used it
 // and then its update gets, in MaterialInput, the Gaussian average over a
 // few l of its neighbours' sources at the end of the same step, and its own
 // weight in that average (discretisation/nonlocal_average.hpp). The engine
@@ -17,6 +19,7 @@ template <class M>
 concept NonlocalModel = requires(const M& m, const typename M::State& s) {
   { m.nonlocal_length() } -> std::convertible_to<double>;
   { m.nonlocal_source(s) } -> std::convertible_to<double>;
+  { m.nonlocal_read(s) } -> std::convertible_to<bool>;
 };
 
 }  // namespace flowmpm

@@ -141,6 +141,8 @@ struct StrainSoftening {
   // Nonlocal band opening (materials/nonlocal_model.hpp).
   double nonlocal_length() const { return parameters.nonlocal_length.value_or(0.0); }
   double nonlocal_source(const State& s) const { return s.opening; }
+  // Onset is local: below it the update does not read the average.
+  bool nonlocal_read(const State& s) const { return s.kappa >= parameters.initiation_strain; }
 
   // omega(kappa) of eq. 5.99: the damage of the local crack band.
   double damage(double kappa, double eps_f) const {

@@ -3,8 +3,9 @@
 // scene whose models ask for averages. g2p_stress updated each such particle
 // with the average at the end of the last step and kept its start of step
 // (tasks/g2p.hpp). Here the average of the new sources is taken; every
-// particle whose average moved is put back to its start and updated again
-// with the same velocity gradient and the new average; and so on until no
+// particle whose average moved, and whose update used it, is put back to
+// its start and updated again with the same velocity gradient and the new
+// average; and so on until no
 // average moves by more than nonlocal_tolerance of the largest, or
 // nonlocal_passes passes (a softening band wider than its model allows may
 // not settle: then the last pass stands and the step is counted in
@@ -44,25 +45,30 @@ void nonlocal_settle(DiscreteSystem<D, Shape>& system) {
       auto& b = system.batches[bi];
       if (b.nonlocal_others.empty()) continue;
       std::visit(
-          [&](auto& states) {
-            using States = std::decay_t<decltype(states)>;
-            const auto& kept = b.step_start;
-            detail::with_stress_update(system, b, [&](auto&& update) {
-              for (std::size_t p = 0; p < b.size(); ++p) {
-                if (!(std::abs(average[bi][p] - b.nonlocal_others[p]) > tolerance)) continue;
-                b.nonlocal_others[p] = average[bi][p];
-                states[p] = std::get<States>(kept.states)[p];
-                b.stress[p] = kept.stress[p];
-                b.strain[p] = kept.strain[p];
-                b.volume[p] = kept.volume[p];
-                double L[D][D];
-                for (int i = 0; i < D; ++i)
-                  for (int j = 0; j < D; ++j) L[i][j] = kept.L[p][D * i + j];
-                update(p, L);  // (keeps the same start again)
-              }
-            });
+          [&](const auto& model) {
+            using M = std::decay_t<decltype(model)>;
+            if constexpr (NonlocalModel<M>) {
+              auto& states = std::get<StateArray<M>>(b.states);
+              const auto& kept = b.step_start;
+              const auto& kept_states = std::get<StateArray<M>>(kept.states);
+              detail::with_stress_update(system, b, [&](auto&& update) {
+                for (std::size_t p = 0; p < b.size(); ++p) {
+                  if (!(std::abs(average[bi][p] - b.nonlocal_others[p]) > tolerance)) continue;
+                  b.nonlocal_others[p] = average[bi][p];
+                  if (!model.nonlocal_read(states[p])) continue;  // the same update again: nothing to redo
+                  states[p] = kept_states[p];
+                  b.stress[p] = kept.stress[p];
+                  b.strain[p] = kept.strain[p];
+                  b.volume[p] = kept.volume[p];
+                  double L[D][D];
+                  for (int i = 0; i < D; ++i)
+                    for (int j = 0; j < D; ++j) L[i][j] = kept.L[p][D * i + j];
+                  update(p, L);  // (keeps the same start again)
+                }
+              });
+            }
           },
-          b.states);
+          system.materials[b.material]);
     }
   }
   ++system.nonlocal.unsettled_steps;
