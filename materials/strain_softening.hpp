@@ -170,7 +170,8 @@ struct StrainSoftening {
     Voigt& e = state.eps;
     // At the start of the step (the rotation below keeps it).
     const double eps_a = nonlocal ? equivalent_strain<Kind>(e) : 0.0;
-    // eps_eq at the end of the step; lambda tr(eps) serves it and the stress.
+    // eps_eq at the end of the step; lambda tr(eps) serves it and the stress
+    // (one product for both, as the local law has always rounded it).
     double eps_b = 0.0, lambda_tr = 0.0;
     if constexpr (Kind == StressState::uniaxial_stress) {
       e[0] += deps[0];
