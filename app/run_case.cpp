@@ -94,6 +94,10 @@ void log_system(spdlog::logger& log, const Case& c, const Simulation<D, Shape>& 
                  wave_speed(m.model));
   }
   log.info("particle fields stored: {}", stored_fields(D, system.heat.carried, system.solvent.carried));
+  if (system.nonlocal.active) {
+    log.info("nonlocal averages: over the initial positions (x0 stored), settled with the step's end by "
+             "nonlocal_settle");
+  }
   for (const auto& k : system.constraints) {
     log.info("node set '{}': {} nodes, velocity prescribed along {}", k.name, k.nodes.size(),
                  "xyz"[k.axis]);
@@ -542,6 +546,10 @@ RunSummary run(const Case& c, const RunOptions& options, const std::string& fres
     throw;
   }
   finish("completed");
+  if (system.nonlocal.unsettled_steps > 0) {
+    log->warn("the nonlocal averages did not settle in {} of {} steps (tasks/nonlocal_settle.hpp): a softening band "
+              "as wide as its model allows; refine the grid", system.nonlocal.unsettled_steps, system.step);
+  }
   log->info("done: {} steps, {} particles, {:.3f} s in the step loop, {:.4g} particle-steps/s (set-up {:.3f} s, "
             "output {:.3f} s), particles sorted {} times",
             summary.steps, summary.particles, summary.step_loop_seconds, summary.particle_steps_per_second,

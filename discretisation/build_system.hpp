@@ -2,7 +2,8 @@
 // (the lattice points inside its shape, or particles from a file; one batch
 // per body, of one material) with their initial stress, velocity
 // constraints and prescribed temperatures and concentrations on node sets,
-// surface fluxes, loads and damping, then the first sort. Temperatures and
+// surface fluxes, loads and damping, then the first sort and, if a model
+// asks for them, the nonlocal weights. Temperatures and
 // concentrations are stored only when the scene conducts heat or diffuses
 // solvent. Volumes are per unit thickness in 2D and per unit cross-section
 // in 1D. Throws CaseError naming the spec's source and the body, node set
@@ -19,6 +20,7 @@
 
 #include "core/errors.hpp"
 #include "discretisation/body_overlap.hpp"
+#include "discretisation/nonlocal_average.hpp"
 #include "discretisation/particle_sort.hpp"
 #include "discretisation/surface_faces.hpp"
 #include "discretisation/system_spec.hpp"
@@ -332,6 +334,7 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
     }
   }
   sort_particles(system);
+  nonlocal_setup(system);
 }
 
 }  // namespace flowmpm

@@ -7,12 +7,14 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "core/time_function.hpp"
 #include "discretisation/blocks.hpp"
 #include "discretisation/external_loads.hpp"
 #include "discretisation/grid.hpp"
+#include "discretisation/nonlocal_bins.hpp"
 #include "discretisation/particles.hpp"
 #include "materials/material.hpp"
 #include "materials/stress_state.hpp"
@@ -141,6 +143,17 @@ struct DiscreteSystem {
   double damping_power = 0.0;
   double damping_dissipated = 0.0;
   double flip_fraction = 1.0;
+  // Nonlocal averages, only when a model asks for them
+  // (discretisation/nonlocal_average.hpp, tasks/nonlocal_settle.hpp).
+  struct Nonlocal {
+    bool active = false;
+    NonlocalBins<D> bins;
+    // Per particle that has been a source, (batch << 32 | particle): the
+    // particles within the cut-off and their weights alpha, in a fixed
+    // order; dropped with the bins when the particles are re-sorted.
+    std::unordered_map<std::uint64_t, std::vector<NonlocalNeighbour>> neighbours;
+    std::int64_t unsettled_steps = 0;  // steps whose averages did not settle
+  } nonlocal;
 
   double t = 0.0, dt = 0.0;  // time at the start of the step, time step (s)
   double max_speed_sq = 0.0;  // largest |v_p|^2 after the last step (m^2/s^2)

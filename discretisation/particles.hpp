@@ -23,6 +23,19 @@ struct StateArraysOf<std::variant<Models...>> {
 };
 using MaterialStates = StateArraysOf<Material>::type;
 
+// A particle as a step found it, kept by the stress update of a model that
+// asks for nonlocal averages, so that the update can be redone from the same
+// start with a new average (tasks/nonlocal_settle.hpp). Written for every
+// particle by each step's stress update before it is read, so the sort need
+// not permute it.
+template <int D>
+struct StepStart {
+  MaterialStates states;
+  std::vector<Voigt> stress, strain;
+  std::vector<double> volume;
+  std::vector<std::array<double, D * D>> L;  // the step's velocity gradient, row by row (1/s)
+};
+
 template <int D>
 struct ParticleBatch {
   int body = 0;      // index into SystemSpec::bodies
@@ -33,7 +46,7 @@ struct ParticleBatch {
   // plus their body's body force at the step's start (m/s^2), set by p2g.
   Vec<D> acceleration = Vec<D>::Zero();
   std::vector<Vec<D>> x, v;                // m, m/s
-  std::vector<Vec<D>> x0;                  // initial positions, only when a reference needs them
+  std::vector<Vec<D>> x0;                  // initial positions, only when a reference or an average needs them
   std::vector<double> mass, volume;        // kg, m^3
   std::vector<Voigt> stress, strain;       // Pa, -
   std::vector<std::uint32_t> id;           // made in this order at set-up: the output row
@@ -48,6 +61,12 @@ struct ParticleBatch {
   // DiscreteSystem::surface_fluxes[surface_flux[f]].
   std::vector<std::uint8_t> flux_faces;
   std::array<int, 6> surface_flux{-1, -1, -1, -1, -1, -1};
+  // Only for a model asking for nonlocal averages
+  // (discretisation/nonlocal_average.hpp): the average of the neighbours'
+  // sources at the end of the last step, the particle's own weight in it,
+  // and the particle as the step found it.
+  std::vector<double> nonlocal_others, nonlocal_self_weight;
+  StepStart<D> step_start;
 
   // Particles of block b are [block_begin[b], block_begin[b + 1]).
   std::vector<std::uint32_t> block_begin;
@@ -82,6 +101,8 @@ struct ParticleBatch {
     f("concentration", self.concentration);
     f("concentration_step", self.concentration_step);
     f("flux_faces", self.flux_faces);
+    f("nonlocal_others", self.nonlocal_others);
+    f("nonlocal_self_weight", self.nonlocal_self_weight);
     std::visit([&](auto& states) { f("state", states); }, self.states);
   }
 };

@@ -73,4 +73,17 @@ const Scheme& scheme_named(std::string_view name) {
   throw std::invalid_argument("unknown scheme \"" + std::string(name) + "\"; known: " + quoted_list(scheme_names()));
 }
 
+Wiring with_nonlocal_settle(Wiring wiring) {
+  const auto stress = std::ranges::find_if(
+      wiring.nodes, [](const StageGroup& g) { return std::ranges::find(g, Stage::g2p_stress) != g.end(); });
+  if (stress == wiring.nodes.end()) throw std::logic_error("a wiring without g2p_stress");
+  const int after = static_cast<int>(stress - wiring.nodes.begin());
+  const int settle = static_cast<int>(wiring.nodes.size());
+  wiring.nodes.push_back({Stage::nonlocal_settle});
+  for (auto& [from, to] : wiring.edges)
+    if (from == after) from = settle;
+  wiring.edges.emplace_back(after, settle);
+  return wiring;
+}
+
 }  // namespace flowmpm

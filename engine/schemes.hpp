@@ -49,4 +49,9 @@ inline Wiring step_wiring(const Wiring& mechanical, const SystemSpec& spec,
   return spec.conducts_heat() || spec.diffuses_solvent() ? with_transport(mechanical, branch) : mechanical;
 }
 
+// `wiring` with a nonlocal_settle node right after the node that runs
+// g2p_stress, before whatever followed it (tasks/nonlocal_settle.hpp): for
+// a scene whose models ask for nonlocal averages.
+Wiring with_nonlocal_settle(Wiring wiring);
+
 }  // namespace flowmpm

@@ -1,5 +1,8 @@
 // A running simulation: the DiscreteSystem, the step graph wired for a
-// scheme with each node's pass resolved once (tasks/stage_table.hpp), and
+// scheme (with nonlocal_settle after g2p_stress where a model asks for
+// nonlocal averages, and the transport branch where the scene conducts
+// heat or diffuses solvent) with each node's pass resolved once
+// (tasks/stage_table.hpp), and
 // what the time loop and the writers read off it.
 #pragma once
 #include <algorithm>
@@ -33,7 +36,8 @@ class Simulation {
              std::function<void(Stage)> observer = {}, TransportBranch branch = TransportBranch::beside)
       : fixed_dt_(fixed_dt),
         observer_(std::move(observer)),
-        graph_(step_wiring(wiring, spec, branch), [this](int node) { run_node(node); }) {
+        graph_(step_wiring(asks_nonlocal(spec) ? with_nonlocal_settle(wiring) : wiring, spec, branch),
+               [this](int node) { run_node(node); }) {
     for (const StageGroup& group : graph_.wiring().nodes) passes_.push_back(stage_pass<D, Shape>(group));
     build_system(spec, system_);
     // Nodes too light for their stiffness are held only where the stress

@@ -15,6 +15,7 @@
 //                                                    // diffusivity, T_ref (transport_properties.hpp)
 // and optionally
 //   named state variables for output (materials/state_variable.hpp);
+//   a nonlocal average of a state variable (materials/nonlocal_model.hpp);
 //   double dissipated_energy(const State&) const;    // J/m^3 dissipated so far (plastic work, damage)
 //   double expansion_work(const State&, const Voigt& sigma, const MaterialInput&) const;
 //                                                    // J/m^3 done on the body: -sigma : d eps_expansion
@@ -33,11 +34,13 @@
 #pragma once
 #include <concepts>
 #include <string>
+#include <type_traits>
 #include <variant>
 #include <vector>
 
 #include "core/registry.hpp"
 #include "materials/linear_elastic.hpp"
+#include "materials/nonlocal_model.hpp"
 #include "materials/orthotropic.hpp"
 #include "materials/strain_softening.hpp"
 #include "materials/transversely_isotropic.hpp"
@@ -65,6 +68,18 @@ inline double density(const Material& m) {
 }
 inline double wave_speed(const Material& m) {
   return std::visit([](const auto& model) { return model.wave_speed(); }, m);
+}
+// l (m) of a model asking for a nonlocal average, 0 for the others.
+inline double nonlocal_length(const Material& m) {
+  return std::visit(
+      [](const auto& model) -> double {
+        if constexpr (NonlocalModel<std::decay_t<decltype(model)>>) {
+          return model.nonlocal_length();
+        } else {
+          return 0.0;
+        }
+      },
+      m);
 }
 inline const char* type_name(const Material& m) { return Materials::name_of(m); }
 inline const TransportProperties& transport(const Material& m) {

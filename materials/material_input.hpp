@@ -28,6 +28,14 @@ struct MaterialInput {
   double temperature_step = 0.0;    // change of T (K)
   double concentration = 0.0;       // c at the end of the increment (weight fraction)
   double concentration_step = 0.0;  // change of c
+  // For a model asking for a nonlocal average (materials/nonlocal_model.hpp):
+  // the weighted average of its neighbours' sources at the end of this step,
+  // sum_{q != p} alpha_pq V_q s_q / sum_q alpha_pq V_q, and the particle's
+  // own weight in it, V_p / sum_q alpha_pq V_q
+  // (discretisation/nonlocal_average.hpp). Both 0 where no engine computes
+  // them (a material point driven alone).
+  double nonlocal_others = 0.0;
+  double nonlocal_self_weight = 0.0;
 };
 
 struct ParticleInit {

@@ -26,6 +26,13 @@ StrainSoftening StrainSoftening::read(ParameterTable& t) {
     t.require(*p.fracture_energy > 0.0, "fracture_energy", "a positive fracture energy G_c in J/m^2");
   }
   p.transport = TransportProperties::read(t, isotropic_axes);
+  if (t.has("nonlocal_length")) {
+    p.nonlocal_length = t.number("nonlocal_length");
+    t.require(p.fracture_energy.has_value(), "nonlocal_length",
+              "fracture_energy beside it, not failure_strain (l measures the crack band's opening, "
+              "against w_c = 2 G_c / (E eps_i))");
+    t.require(*p.nonlocal_length > 0.0, "nonlocal_length", "a positive nonlocal length l in m");
+  }
   return StrainSoftening(p);
 }
 
@@ -45,6 +52,14 @@ StrainSoftening::State StrainSoftening::initial_state(const ParticleInit& init) 
       << "fracture_energy = " << G_c << " J/m^2: eps_f = 2 G_c / (E eps_i h) = " << s.eps_f
       << " is not above initiation_strain = " << eps_i << " (the band would snap back); use "
       << "cells smaller than 2 G_c / (E eps_i^2) = " << 2.0 * G_c / (E * eps_i * eps_i) << " m";
+    throw CaseError(m.str());
+  }
+  if (parameters.nonlocal_length && *parameters.nonlocal_length < init.cell_length) {
+    std::ostringstream m;
+    m.precision(6);
+    m << "strain_softening: nonlocal_length = " << *parameters.nonlocal_length << " m is below the cell size h = "
+      << init.cell_length << " m: the particles would not resolve the Gaussian weight; use a nonlocal_length of "
+      << "at least the cell size (about twice the width of the band that forms)";
     throw CaseError(m.str());
   }
   return s;

@@ -3,7 +3,9 @@
 //             (a = 1 FLIP, a = 0 PIC), x_p <- x_p + dt sum_I N_Ip v_I,
 //             with v_I the velocity after grid_integrate.
 // g2p_stress: L_p = sum_I v_I (x) dN_Ip, d eps = sym(L_p) dt, the material
-//             update sigma(d eps), eps += d eps, V_p *= 1 + tr(d eps).
+//             update sigma(d eps), eps += d eps, V_p *= 1 + tr(d eps); a
+//             model asking for nonlocal averages gets them and keeps its
+//             start of step (tasks/nonlocal_settle.hpp).
 // The material update sees the particle's own temperature and
 // concentration when the scene carries them (tasks/transport.hpp, whose
 // branch of the step graph joins before this stage).
@@ -37,7 +39,10 @@ struct TransportedInput {
 // The material update of particle p for its velocity gradient L
 // (g2p_stress). Returns the work done on it by its expansion strains over
 // the step (J), -V sigma_mid : d eps_expansion, with `ExpansionWork`.
-template <int D, class Shape, StressState Kind, bool ExpansionWork, class MaterialModel>
+// Nonlocal: the model asks for nonlocal averages; the update gets them,
+// and the particle's start of step is kept for tasks/nonlocal_settle.hpp
+// to redo the update.
+template <int D, class Shape, StressState Kind, bool ExpansionWork, class MaterialModel, bool Nonlocal = false>
 [[gnu::always_inline]] inline double update_particle_stress(DiscreteSystem<D, Shape>& system, ParticleBatch<D>& b, std::size_t p,
                                                          const double (&L)[D][D], const MaterialModel& material,
                                                          typename MaterialModel::State& state,
@@ -62,6 +67,17 @@ template <int D, class Shape, StressState Kind, bool ExpansionWork, class Materi
     input.concentration_step = transported.concentration_step[p];
     transported.concentration_step[p] = 0.0;
   }
+  if constexpr (Nonlocal) {
+    input.nonlocal_others = b.nonlocal_others[p];
+    input.nonlocal_self_weight = b.nonlocal_self_weight[p];
+    auto& kept = b.step_start;
+    std::get<StateArray<MaterialModel>>(kept.states)[p] = state;
+    kept.stress[p] = b.stress[p];
+    kept.strain[p] = b.strain[p];
+    kept.volume[p] = b.volume[p];
+    for (int i = 0; i < D; ++i)
+      for (int j = 0; j < D; ++j) kept.L[p][D * i + j] = L[i][j];
+  }
   double expansion_work = 0.0;
   if constexpr (ExpansionWork) {
     const Voigt before = b.stress[p];
@@ -82,8 +98,8 @@ template <int D, class Shape, StressState Kind, bool ExpansionWork, class Materi
 }
 
 // Calls f(update) with update(p, L) the material update of `b`'s particles:
-// one dispatch on the material and the stress state per call, none per
-// particle.
+// one dispatch on the material, the stress state and whether the batch asks
+// for nonlocal averages per call, none per particle.
 template <int D, class Shape, class F>
 void with_stress_update(DiscreteSystem<D, Shape>& system, ParticleBatch<D>& b, F&& f) {
   std::visit(
@@ -103,6 +119,16 @@ void with_stress_update(DiscreteSystem<D, Shape>& system, ParticleBatch<D>& b, F
         // The expansion work, for models that can do it; a model that says
         // it does not expand (expands()) skips it, its update alone as before.
         auto for_state = [&]<StressState Kind>() {
+          if constexpr (NonlocalModel<M>) {
+            if (!b.nonlocal_others.empty()) {
+              // A nonlocal model has no expansion strains: no expansion work.
+              f([&](std::size_t p, const double(&L)[D][D]) {
+                return update_particle_stress<D, Shape, Kind, false, M, true>(system, b, p, L, material, states[p],
+                                                                             transported);
+              });
+              return;
+            }
+          }
           typename M::State no_state{};
           auto with_work = [&]<bool Work>() {
             f([&](std::size_t p, const double(&L)[D][D]) {

@@ -8,6 +8,8 @@
 
 namespace flowmpm {
 
+// nonlocal_settle is wired after g2p_stress only in a scene whose models ask
+// for nonlocal averages (tasks/nonlocal_settle.hpp).
 enum class Stage {
   p2g_momentum,
   p2g_force,
@@ -21,11 +23,12 @@ enum class Stage {
   transport_flux,
   transport_update,
   transport_g2p,
+  nonlocal_settle,
 };
 
-inline constexpr std::array<const char*, 11> stage_names = {
-    "p2g_momentum", "p2g_force",     "grid_velocity",  "grid_integrate",   "g2p_motion",   "g2p_stress",
-    "remap",        "transport_p2g", "transport_flux", "transport_update", "transport_g2p"};
+inline constexpr std::array<const char*, 12> stage_names = {
+    "p2g_momentum",  "p2g_force",      "grid_velocity",    "grid_integrate", "g2p_motion",     "g2p_stress",
+    "remap",         "transport_p2g",  "transport_flux",   "transport_update", "transport_g2p", "nonlocal_settle"};
 
 inline const char* stage_name(Stage s) { return stage_names[static_cast<std::size_t>(s)]; }
 

@@ -9,6 +9,7 @@
 
 #include "tasks/g2p.hpp"
 #include "tasks/grid_update.hpp"
+#include "tasks/nonlocal_settle.hpp"
 #include "tasks/p2g.hpp"
 #include "tasks/stage.hpp"
 #include "tasks/transport.hpp"
@@ -40,6 +41,7 @@ StagePass<D, Shape> stage_pass(const StageGroup& group) {
       {{Stage::transport_flux}, &transport_flux<D, Shape>},
       {{Stage::transport_update}, &transport_update<D, Shape>},
       {{Stage::transport_g2p}, &transport_g2p<D, Shape>},
+      {{Stage::nonlocal_settle}, &nonlocal_settle<D, Shape>},
   };
   for (const Entry& e : table)
     if (e.stages == group) return e.pass;

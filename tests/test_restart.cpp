@@ -365,6 +365,22 @@ TEST_CASE("transport: temperature, concentration, their pending expansion and th
   check_restart_matches(conduction, config_file("verification/slab_conduction.toml"), 64);
 }
 
+TEST_CASE("loads and damping: the pressure's work and the damping's dissipation carry") {
+  // The thick cylinder of configs/benchmarks: a pressure on the inner
+  // surface (its faces follow their particles through re-sorts) and local
+  // damping; load_work and dissipated_energy are columns of timeseries.csv.
+  TempDir dir("flowmpm_restart");
+  check_restart_matches(dir, config_file("benchmarks/thick_cylinder.toml"), 1500, {"output.every=250"});
+}
+
+TEST_CASE("nonlocal strain softening: the averages and the damage carry") {
+  // The symmetric bar of configs/materials: a band opens through the
+  // nonlocal averages (weights rebuilt after the restart from x0, carried).
+  TempDir dir("flowmpm_restart");
+  check_restart_matches(dir, config_file("materials/strain_softening_symmetric_bar.toml"), 120,
+                        {"output.fields=[\"position\",\"stress\",\"damage\"]"});
+}
+
 TEST_CASE("a blow-up after the restart writes the same last good state") {
   // The bar of test_hard_cases that gravity pushes past the guard at step
   // 240: the last good state, kept at step 230 (every 10 steps), carries

@@ -4,7 +4,9 @@
 //   USL:  p2g_momentum + p2g_force -> grid_velocity -> grid_integrate -> g2p_motion -> g2p_stress
 //   MUSL: p2g_momentum + p2g_force -> grid_velocity -> grid_integrate -> g2p_motion -> remap
 //         -> grid_velocity -> g2p_stress
-// ("+": the two p2g stages may run in either order, or at once.) The engine
+// ("+": the two p2g stages may run in either order, or at once.) A scene
+// whose models ask for nonlocal averages gets nonlocal_settle right after
+// the node running g2p_stress; no other scene has it. The engine
 // runs the two p2g stages, and USL's two g2p stages, in one pass over the
 // particles ("&" in the wiring's description); the observer still sees each
 // stage, in the order above.
@@ -34,11 +36,13 @@ using namespace flowmpm;
 
 namespace {
 
-std::vector<Stage> recorded_order(const std::string& scheme, bool serial) {
-  const Case c = read_case(testing::config("uniaxial_stress/case1_usl.toml"), {"analysis.scheme=" + scheme});
+template <int D = 3>
+std::vector<Stage> recorded_order(const std::string& scheme, bool serial,
+                                  const std::string& config = "uniaxial_stress/case1_usl.toml") {
+  const Case c = read_case(testing::config(config), {"analysis.scheme=" + scheme});
   std::mutex mutex;
   std::vector<Stage> order;
-  auto sim = testing::simulation<3, LinearShape>(c, [&](Stage s) {
+  auto sim = testing::simulation<D, LinearShape>(c, [&](Stage s) {
     std::lock_guard lock(mutex);
     order.push_back(s);
   });
@@ -85,6 +89,26 @@ TEST_CASE("MUSL wiring") {
   CHECK(scheme_named("musl").wiring.describe() ==
         "p2g_momentum & p2g_force -> grid_velocity -> grid_integrate -> g2p_motion -> remap -> "
         "grid_velocity -> g2p_stress");
+}
+
+TEST_CASE("nonlocal averages: nonlocal_settle right after g2p_stress, only where a model asks") {
+  const std::string bar = "materials/strain_softening_symmetric_bar.toml";  // nonlocal_length
+  using enum Stage;
+  check_order(recorded_order<2>("usl", false, bar),
+              {p2g_momentum, p2g_force, grid_velocity, grid_integrate, g2p_motion, g2p_stress, nonlocal_settle}, 2);
+  check_order(recorded_order<2>("usf", true, bar),
+              {p2g_momentum, grid_velocity, g2p_stress, nonlocal_settle, p2g_force, grid_integrate, g2p_motion}, 1);
+  check_order(recorded_order<2>("musl", false, bar),
+              {p2g_momentum, p2g_force, grid_velocity, grid_integrate, g2p_motion, remap, grid_velocity, g2p_stress,
+               nonlocal_settle},
+              2);
+  const Case c = read_case(testing::config(bar));
+  CHECK(testing::simulation<2, LinearShape>(c).graph().wiring().describe() ==
+        "p2g_momentum & p2g_force -> grid_velocity -> grid_integrate -> g2p_motion & g2p_stress -> nonlocal_settle");
+  // The notched bar (strain_softening without nonlocal_length): the plain wiring.
+  const Case notched = read_case(testing::config("materials/strain_softening_bar.toml"));
+  CHECK(testing::simulation<2, LinearShape>(notched).graph().wiring().describe() ==
+        scheme_named("usl").wiring.describe());
 }
 
 TEST_CASE("the graph runs each stage node once per step, for many steps") {

@@ -8,6 +8,12 @@
 // about the static solution -(rho g / M) f(Y). Error: RMS of the vertical
 // displacement over particles and samples, relative to the static top
 // displacement rho g H^2 / (2 M). 2D (plane strain) or 3D.
+// Amplitude: the small-strain solution is the yardstick while the strain
+// at the base, e = rho g H / M, is small: with the engine's logarithmic
+// strain (README "Kinematics") the error has a floor of about 0.85 e
+// (measured with g = 10, 100, 1000 m/s^2 on the shipped column: 0.51 %,
+// 0.83 %, 6.3 %); the shipped e = 7.4e-4 puts it at 6e-4, below the
+// 0.4-0.6 % discretisation error at 20 cells.
 #pragma once
 #include <cmath>
 #include <map>
