@@ -14,6 +14,9 @@
 #include "engine/schemes.hpp"
 #include "engine/simulation.hpp"
 #include "engine/stable_time_step.hpp"
+#include "app/interrupt.hpp"
+#include "io/memory_estimate.hpp"
+#include "io/output_lock.hpp"
 #include "io/results_h5.hpp"
 #include "io/timeseries_csv.hpp"
 #include "io/xdmf.hpp"
@@ -81,6 +84,11 @@ void log_system(spdlog::logger& log, const Case& c, const DiscreteSystem<D, Shap
                  "xyz"[k.axis]);
   }
   if (system.gravity.norm() > 0.0) log.info("gravity: {} m/s^2", system.gravity.norm());
+  const MemoryEstimate estimate = estimate_memory(c);
+  log.info("{}", estimate_text(estimate));
+  if (estimate.steps > long_run_steps) {
+    log.warn("a long run: {:.3g} steps (more than {:.0e})", estimate.steps, long_run_steps);
+  }
   const StableStep stable = stable_time_step(c.system, scheme);
   if (c.dt_auto) {
     log.info("time: dt automatic, CFL {} of h/c = {:.4g} s (the stable limit is {:.3g} h/c for {} with {} at {:.3g} "
@@ -100,20 +108,17 @@ RunSummary run(const Case& c, const RunOptions& options) {
   const Scheme& scheme = scheme_named(c.scheme);
   Simulation<D, Shape> sim(c.system, scheme.wiring, c.dt_auto ? 0.0 : c.dt);
   auto& system = sim.system();
+  std::optional<Reference> reference = c.reference;
+  if (reference) reference->initialise(system);  // with its own checks, before anything is written
+  // From here the output directory is this run's (io/output_lock.hpp), and
+  // an interrupt lets the run finish its step.
   const auto& dir = c.output.directory;
+  std::optional<OutputLock> lock;
+  std::optional<FinishBeforeExit> finish_before_exit;
   if (options.write_results) {
-    std::error_code error;
-    std::filesystem::create_directories(dir, error);
-    if (error) {
-      throw CaseError("output directory " + dir.string() + ": cannot create it (" + error.message() +
-                      "); set output.directory or --output");
-    }
+    lock.emplace(dir, "case " + c.file.string());
+    finish_before_exit.emplace();
   }
-  const auto log = run_logger(options.write_results ? std::optional(dir / "run.log") : std::nullopt,
-                              options.log_to_console);
-  log->info("case '{}' from {}, {} thread{}, output in {}", c.name, c.file.string(), options.threads,
-            options.threads == 1 ? "" : "s", options.write_results ? dir.string() : "(none)");
-  log_system(*log, c, system, scheme);
 
   RunSummary summary;
   summary.case_name = c.name;
@@ -128,12 +133,21 @@ RunSummary run(const Case& c, const RunOptions& options) {
   summary.dt = c.dt_auto ? 0.0 : c.dt;
   summary.end_time = c.end_time;
   summary.setup_seconds = options.setup_seconds + seconds_since(setup_start);
+  if (options.write_results) {
+    summary.status = "running";
+    start_output(dir, summary);
+    summary.status = "completed";
+  }
+  const auto log = run_logger(options.write_results ? std::optional(dir / "run.log") : std::nullopt,
+                              options.log_to_console);
+  log->info("case '{}' from {}, {} thread{}, output in {}", c.name, c.file.string(), options.threads,
+            options.threads == 1 ? "" : "s", options.write_results ? dir.string() : "(none)");
+  log_system(*log, c, system, scheme);
 
   // Without output.every: about 20 output steps over the run.
   const std::int64_t planned_steps =
       c.dt_auto ? static_cast<std::int64_t>(std::ceil(c.end_time / c.dt)) : c.steps;
   const std::int64_t every = c.output.every > 0 ? c.output.every : std::max<std::int64_t>(1, planned_steps / 20);
-  std::optional<Reference> reference = c.reference;
   std::int64_t sample_every = 1;
   auto sample_reference = [&] {
     const auto t0 = Clock::now();
@@ -141,7 +155,6 @@ RunSummary run(const Case& c, const RunOptions& options) {
     summary.reference_seconds += seconds_since(t0);
   };
   if (reference) {
-    reference->initialise(system);
     if (reference->samples() > 0) sample_every = std::max<std::int64_t>(1, planned_steps / reference->samples());
     sample_reference();
     log->info("reference: {} (errors sampled every {} step{})", reference->type(), sample_every,
@@ -232,11 +245,11 @@ RunSummary run(const Case& c, const RunOptions& options) {
   summary.energy_initial = initial.kinetic_energy + initial.strain_energy;
   sim.measure_speed();
 
-  write_output();
-  last_written = system.step;
   auto last_progress = Clock::now();
   const auto loop_start = Clock::now();
   try {
+    write_output();
+    last_written = system.step;
     while (!done()) {
       if (options.interrupt && options.interrupt->load()) {
         if (system.step != last_written) write_output();
@@ -282,6 +295,19 @@ RunSummary run(const Case& c, const RunOptions& options) {
     }
     log->error("{}", e.what());
     throw;
+  } catch (const std::exception& e) {
+    // An output file could not be written (a full disk) or memory ran out:
+    // one line naming what failed; the summary says so if it can still be
+    // written, and what was written before stays readable.
+    const std::string message =
+        fmt::format("step {} (t = {:.6g} s): {}", system.step, system.t, failure_text(e));
+    log->error("{}", message);
+    try {
+      finish("failed: " + message);
+    } catch (const std::exception&) {
+      // The disk that failed the output may fail the summary too.
+    }
+    throw SimulationError(message);
   }
   finish("completed");
   log->info("done: {} steps, {} particles, {:.3f} s in the step loop, {:.4g} particle-steps/s (set-up {:.3f} s, "
@@ -305,6 +331,11 @@ RunSummary run(const Case& c, const RunOptions& options) {
 }
 
 }  // namespace
+
+std::string failure_text(const std::exception& e) {
+  if (dynamic_cast<const std::bad_alloc*>(&e)) return "out of memory (std::bad_alloc)";
+  return e.what();
+}
 
 RunSummary run_case(const Case& c, const RunOptions& options) {
   return with_dimension_and_shape(c.system.dimension, c.system.shape_function,

@@ -37,13 +37,27 @@ herr_t keep_innermost(unsigned n, const H5E_error2_t* error, void* data) {
   return 0;
 }
 
-// Throws with the innermost message of HDF5's error stack, which names the
-// actual cause (e.g. "unable to open file: ... errno = 2, ...").
+// The cause in HDF5's innermost message, in a few words: the system's
+// error when it names one ("... errno = 28, error message = 'No space left
+// on device', ..." gives "No space left on device"), else the message's
+// first line.
+std::string cause(const std::string& detail) {
+  const std::string marker = "error message = '";
+  if (const auto at = detail.find(marker); at != std::string::npos) {
+    const auto begin = at + marker.size();
+    return detail.substr(begin, detail.find('\'', begin) - begin);
+  }
+  return detail.substr(0, detail.find('\n'));
+}
+
+// Throws, in one line, what failed and the innermost cause on HDF5's error
+// stack (e.g. "No space left on device").
 [[noreturn]] void fail(const std::string& file, const std::string& what) {
   std::string detail;
   H5Ewalk2(H5E_DEFAULT, H5E_WALK_UPWARD, keep_innermost, &detail);
+  H5Eclear2(H5E_DEFAULT);
   std::string message = "HDF5 file " + file + ": " + what;
-  if (!detail.empty()) message += " (" + detail + ")";
+  if (!detail.empty()) message += " (" + cause(detail) + ")";
   throw std::runtime_error(message);
 }
 
@@ -188,14 +202,22 @@ void ResultsH5::write(const ParticleSnapshot& snapshot) {
     index_length_ = snapshot.count;
   }
 
-  Handle group(H5Gcreate2(file_, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
-  if (!group.valid()) fail(path_, "cannot create group " + name);
-  write_scalar_attribute(group.get(), "time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, snapshot.time, path_, name);
-  write_scalar_attribute(group.get(), "step", H5T_STD_I64LE, H5T_NATIVE_INT64, snapshot.step, path_, name);
-  for (const Field& field : fields) bytes += write_field(group.get(), name, snapshot.count, field, path_);
-  // Complete only now: written last, then flushed.
-  write_scalar_attribute(group.get(), "complete", H5T_STD_I32LE, H5T_NATIVE_INT, 1, path_, name);
-  if (H5Fflush(file_, H5F_SCOPE_GLOBAL) < 0) fail(path_, "cannot flush after " + name);
+  try {
+    Handle group(H5Gcreate2(file_, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+    if (!group.valid()) fail(path_, "cannot create group " + name);
+    write_scalar_attribute(group.get(), "time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, snapshot.time, path_, name);
+    write_scalar_attribute(group.get(), "step", H5T_STD_I64LE, H5T_NATIVE_INT64, snapshot.step, path_, name);
+    for (const Field& field : fields) bytes += write_field(group.get(), name, snapshot.count, field, path_);
+    // Complete only now: written last, then flushed.
+    write_scalar_attribute(group.get(), "complete", H5T_STD_I32LE, H5T_NATIVE_INT, 1, path_, name);
+    if (H5Fflush(file_, H5F_SCOPE_GLOBAL) < 0) fail(path_, "cannot flush after " + name);
+  } catch (const std::runtime_error&) {
+    // A step is complete or absent: the partial group is unlinked (if the
+    // file can still take that; a reader skips a group not marked complete).
+    H5Ldelete(file_, name.c_str(), H5P_DEFAULT);
+    H5Eclear2(H5E_DEFAULT);
+    throw;
+  }
   written_.push_back({snapshot.step, snapshot.time, snapshot.count});
   fields_ = std::move(layout);
   bytes_ += bytes;
