@@ -366,6 +366,8 @@ Case read_case(const std::filesystem::path& file, const std::vector<std::string>
   }
   t.reject_unknown_keys();
 
+  check_memory(c, t);
+
   // The explicit step is stable only below a fraction of the time a P wave
   // takes to cross the smallest cell (engine/stable_time_step.hpp).
   const Scheme& scheme = scheme_named(c.scheme);
@@ -387,7 +389,6 @@ Case read_case(const std::filesystem::path& file, const std::vector<std::string>
     analysis.fail("end_time", "at most " + std::string(max_steps_text) + " steps (end_time over the first dt, " +
                                   readable_text(c.dt) + " s, is " + readable_text(c.end_time / c.dt) + ")");
   }
-  check_memory(c, t);
   return c;
 }
 

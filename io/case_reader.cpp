@@ -50,16 +50,17 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
 // under- or overflow what the engine makes of them (a modulus over a
 // density, squared, times dt squared): doubles span about 1e-308 to 1e308,
 // and the cube of a number inside the bounds stays inside that range.
-constexpr double largest_exact_integer = 9007199254740992.0;  // 2^53
+constexpr std::int64_t largest_exact_integer = std::int64_t{1} << 53;
 constexpr double largest_number = 1e100, smallest_number = 1e-100;
 constexpr const char* number_bounds =
     "a finite number of magnitude 0 or between 1e-100 and 1e100 (an integer up to 2^53 = 9007199254740992)";
 
 std::optional<double> usable_number(const toml::node& node) {
   if (const auto* i = node.as_integer()) {
-    const double value = static_cast<double>(i->get());
-    if (std::abs(value) > largest_exact_integer) return std::nullopt;
-    return value;
+    // Compared as integers: 2^53 + 1 rounds to 2^53 as a double.
+    const std::int64_t value = i->get();
+    if (value > largest_exact_integer || value < -largest_exact_integer) return std::nullopt;
+    return static_cast<double>(value);
   }
   const auto* f = node.as_floating_point();
   if (!f) return std::nullopt;

@@ -1,5 +1,7 @@
 #include "io/memory_estimate.hpp"
 
+#include <sys/resource.h>
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -127,6 +129,12 @@ std::uint64_t memory_limit() {
   if (const auto limit = cgroup_value("memory.max")) {
     available = std::min(available, *limit - cgroup_value("memory.current").value_or(0.0));
   }
+  // ulimit -v: the address space (which counts more than the resident
+  // memory estimated, so a case close to it may still run out: exit 2).
+  struct rlimit space {};
+  if (::getrlimit(RLIMIT_AS, &space) == 0 && space.rlim_cur != RLIM_INFINITY) {
+    available = std::min(available, static_cast<double>(space.rlim_cur));
+  }
   return static_cast<std::uint64_t>(std::clamp(available, 0.0, 1.8e19));
 }
 
@@ -186,16 +194,16 @@ void check_memory(const Case& c, TableReader& root) {
       readable_text(*largest) + " of them in bodies[" + std::to_string(body) +
       "] from its min, max and spacing) and " + readable_text(e.nodes) + " grid nodes (" +
       memory_text(e.node_bytes) + ", from grid.cells)";
-  // Particle ids and the sort's keys (a cell of the block-padded grid) are 32-bit.
-  if (e.particles >= 4.29e9) blame("fewer than 2^32 particles in all; the case makes " + figures);
-  if (e.padded_cells >= 4.29e9) {
-    root.table("grid").fail("cells", "fewer than 2^32 cells in all (counted in whole blocks of cells), got " +
-                                         readable_text(e.padded_cells));
-  }
   const double limit = static_cast<double>(memory_limit());
   if (e.total_bytes > limit) {
     blame("a case that fits in memory: it needs about " + memory_text(e.total_bytes) + " for " + figures +
           ", more than the " + memory_text(limit) + " available (--max-memory sets the limit)");
+  }
+  // Particle ids and the sort's keys (a cell of the block-padded grid) are 32-bit.
+  if (e.particles >= 4.29e9) blame("fewer than 2^32 particles in all; the case makes " + figures);
+  if (e.padded_cells >= 4.29e9) {
+    root.table("grid").fail("cells", "fewer than 2^32 cells in all (counted in whole blocks of cells; these are " +
+                                         readable_text(e.padded_cells) + ")");
   }
 }
 

@@ -32,8 +32,8 @@ struct MemoryEstimate {
 MemoryEstimate estimate_memory(const Case& c);
 
 // The memory a case may take: --max-memory if given, else what the
-// machine has available (MemAvailable of /proc/meminfo, and the cgroup's
-// limit less its use where one is set).
+// machine has available (MemAvailable of /proc/meminfo, the cgroup's limit
+// less its use where one is set, and the address space limit, ulimit -v).
 std::uint64_t memory_limit();
 // Sets the --max-memory limit (nullopt: the machine's available memory).
 void set_memory_limit(std::optional<std::uint64_t> bytes);
