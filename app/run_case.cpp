@@ -8,13 +8,13 @@
 #include <spdlog/sinks/dist_sink.h>
 #include <spdlog/spdlog.h>
 
+#include "app/interrupt.hpp"
 #include "core/errors.hpp"
 #include "core/number_text.hpp"
 #include "discretisation/shape_functions.hpp"
 #include "engine/schemes.hpp"
 #include "engine/simulation.hpp"
 #include "engine/stable_time_step.hpp"
-#include "app/interrupt.hpp"
 #include "io/memory_estimate.hpp"
 #include "io/output_lock.hpp"
 #include "io/results_h5.hpp"

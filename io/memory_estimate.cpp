@@ -184,16 +184,16 @@ void check_memory(const Case& c, TableReader& root) {
   // The body with the most particles: the keys to change if particles dominate.
   const auto largest = std::max_element(e.body_particles.begin(), e.body_particles.end());
   const std::size_t body = static_cast<std::size_t>(largest - e.body_particles.begin());
+  TableReader largest_body = root.tables("bodies")[body];
+  const std::string spacing_key = largest_body.has("spacing") ? "spacing" : "particles_per_cell";
   const auto blame = [&](const std::string& problem) {
     if (e.node_bytes >= e.particle_bytes) root.table("grid").fail("cells", problem);
-    TableReader b = root.tables("bodies")[body];
-    b.fail(b.has("spacing") ? "spacing" : "particles_per_cell", problem);
+    largest_body.fail(spacing_key, problem);
   };
-  const std::string figures =
-      readable_text(e.particles) + " particles (" + memory_text(e.particle_bytes) + ", " +
-      readable_text(*largest) + " of them in bodies[" + std::to_string(body) +
-      "] from its min, max and spacing) and " + readable_text(e.nodes) + " grid nodes (" +
-      memory_text(e.node_bytes) + ", from grid.cells)";
+  const std::string figures = readable_text(e.particles) + " particles (" + memory_text(e.particle_bytes) + ", " +
+                              readable_text(*largest) + " of them in bodies[" + std::to_string(body) +
+                              "] from its min, max and " + spacing_key + ") and " + readable_text(e.nodes) +
+                              " grid nodes (" + memory_text(e.node_bytes) + ", from grid.cells)";
   const double limit = static_cast<double>(memory_limit());
   if (e.total_bytes > limit) {
     blame("a case that fits in memory: it needs about " + memory_text(e.total_bytes) + " for " + figures +

@@ -6,14 +6,16 @@
 // 2 (never a signal: no abort, no crash, no sanitizer report, which ends the
 // process with a signal or status 1 only when asked to), within a deadline;
 // a run still going after 2 s must stop within 2 s of Ctrl-C with status
-// 130. `check` and `run` must agree on whether the case is valid, and a run
-// that exits 1 must have written nothing. The counts are printed.
+// 130. `check` and `run` must agree on whether the case is valid, a run
+// that exits 1 must have written nothing, and one that exits 0 must have
+// run at least a step. The counts are printed.
 #include <doctest/doctest.h>
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <chrono>
 #include <filesystem>
 #include <map>
@@ -85,9 +87,39 @@ void leaves_of(toml::node& node, std::vector<Leaf>& out) {
 
 toml::table parse_value(const std::string& text) { return toml::parse("v = " + text); }
 
+// Factors a number is scaled by: a case that is still plausible, but bigger,
+// longer, stiffer, or of the other sign.
+const double factors[] = {10.0, 0.1, 1000.0, 1e-3, -1.0, 1e6, 1e-6, 2.0, 0.5};
+
 // One mutation of the document (structural) or of the text (textual).
 std::string mutate(const std::string& text, Rng& rng) {
-  const std::size_t kind = rng.below(10);
+  const std::size_t kind = rng.below(12);
+  if (kind >= 10) {
+    // Scale 1 to 3 numbers.
+    toml::table root = toml::parse(text);
+    std::vector<Leaf> leaves, numbers;
+    leaves_of(root, leaves);
+    for (const Leaf& leaf : leaves) {
+      const toml::node* n = leaf.parent->is_table() ? leaf.parent->as_table()->get(leaf.key)
+                                                    : leaf.parent->as_array()->get(leaf.index);
+      if (n && n->is_number()) numbers.push_back(leaf);
+    }
+    const int count = 1 + static_cast<int>(rng.below(3));
+    for (int k = 0; k < count && !numbers.empty(); ++k) {
+      const Leaf& leaf = numbers[rng.below(numbers.size())];
+      const double f = factors[rng.below(std::size(factors))];
+      if (toml::table* t = leaf.parent->as_table()) {
+        const double v = t->get(leaf.key)->value_or(0.0);
+        t->insert_or_assign(leaf.key, v * f);
+      } else if (toml::array* a = leaf.parent->as_array()) {
+        const double v = a->get(leaf.index)->value_or(0.0);
+        a->replace(a->begin() + static_cast<std::ptrdiff_t>(leaf.index), v * f);
+      }
+    }
+    std::ostringstream out;
+    out << toml::toml_formatter{root} << "\n";
+    return out.str();
+  }
   if (kind < 7) {
     toml::table root = toml::parse(text);
     const int count = 1 + static_cast<int>(rng.below(3));
@@ -193,42 +225,69 @@ TEST_CASE("fuzz: mutated shipped cases end with status 0, 1 or 2, never a signal
   constexpr int mutants = 300;
   Rng rng{std::mt19937_64(20260115)};
   TempDir dir("flowmpm_test_fuzz");
-  std::map<std::string, int> counts;  // "check 0", "run 130", ...
   std::vector<std::string> sources;
   for (const char* name : shipped) sources.push_back(read_text(fs::path(FLOWMPM_SOURCE_DIR) / "configs" / name));
-
+  struct Mutant {
+    std::size_t source;
+    std::string text;
+    Outcome check, run;
+    std::vector<std::string> left;  // what the work directory holds after the run
+    std::string summary;            // the run's summary.json
+  };
+  std::vector<Mutant> all;
   for (int m = 0; m < mutants; ++m) {
     const std::size_t source = rng.below(sources.size());
-    const std::string text = mutate(sources[source], rng);
-    const fs::path work = dir.path / std::to_string(m);
-    fs::create_directories(work);
-    write_text(work / "case.toml", text);
-    const fs::path out = work / "out";
-    INFO("mutant " << m << " of " << shipped[source] << ":\n" << text);
+    all.push_back({source, mutate(sources[source], rng), {}, {}, {}, {}});
+  }
 
-    const Outcome check = run_with_deadline(
-        {FLOWMPM_EXECUTABLE, "check", "case.toml", "--output", out.string()}, work, 0.0, 60.0);
-    INFO("check printed:\n" << check.output);
-    CHECK_FALSE(check.hung);
-    CHECK(check.signal == 0);
-    CHECK((check.status == 0 || check.status == 1 || check.status == 2));
-    ++counts["check " + std::to_string(check.status)];
-
-    const Outcome run = run_with_deadline(
-        {FLOWMPM_EXECUTABLE, "run", "case.toml", "--threads", "1", "--quiet", "--output", out.string()}, work, 2.0,
-        2.0);
-    INFO("run printed:\n" << run.output);
-    CHECK_FALSE(run.hung);
-    CHECK(run.signal == 0);
-    const bool allowed = run.status == 0 || run.status == 1 || run.status == 2 || (run.interrupted && run.status == 130);
-    CHECK(allowed);
-    ++counts["run " + std::to_string(run.status)];
-    // check and run agree on whether the case is valid.
-    CHECK((check.status == 1) == (run.status == 1));
-    if (run.status == 1) {
-      CHECK(files_in(work) == std::vector<std::string>{"case.toml"});
+  // Two at a time (the processes, not the assertions, run on the threads).
+  std::atomic<std::size_t> next{0};
+  const auto worker = [&] {
+    for (std::size_t m; (m = next++) < all.size();) {
+      Mutant& mutant = all[m];
+      const fs::path work = dir.path / std::to_string(m);
+      fs::create_directories(work);
+      write_text(work / "case.toml", mutant.text);
+      const fs::path out = work / "out";
+      mutant.check = run_with_deadline({FLOWMPM_EXECUTABLE, "check", "case.toml", "--output", out.string()}, work,
+                                       0.0, 60.0);
+      mutant.run = run_with_deadline(
+          {FLOWMPM_EXECUTABLE, "run", "case.toml", "--threads", "1", "--quiet", "--output", out.string()}, work, 2.0,
+          2.0);
+      mutant.left = files_in(work);
+      mutant.summary = read_text(out / "summary.json");
+      fs::remove_all(work);
     }
-    fs::remove_all(work);
+  };
+  std::thread other(worker);
+  worker();
+  other.join();
+
+  std::map<std::string, int> counts;  // "check 0", "run 130", ...
+  for (std::size_t m = 0; m < all.size(); ++m) {
+    const Mutant& mutant = all[m];
+    INFO("mutant " << m << " of " << shipped[mutant.source] << ":\n" << mutant.text);
+    INFO("check printed:\n" << mutant.check.output);
+    INFO("run printed:\n" << mutant.run.output);
+    for (const Outcome* o : {&mutant.check, &mutant.run}) {
+      CHECK_FALSE(o->hung);
+      CHECK(o->signal == 0);
+    }
+    CHECK((mutant.check.status == 0 || mutant.check.status == 1 || mutant.check.status == 2));
+    const int run = mutant.run.status;
+    CHECK((run == 0 || run == 1 || run == 2 || (mutant.run.interrupted && run == 130)));
+    // check and run agree on whether the case is valid.
+    CHECK((mutant.check.status == 1) == (run == 1));
+    // Nothing written after exit 1.
+    if (run == 1) CHECK(mutant.left == std::vector<std::string>{"case.toml"});
+    // A run that says it succeeded ran: completed, at least one step (an
+    // overflowing step count once ran none).
+    if (run == 0) {
+      CHECK(contains(mutant.summary, "\"status\": \"completed\""));
+      CHECK_FALSE(contains(mutant.summary, "\"steps\": 0,"));
+    }
+    ++counts["check " + std::to_string(mutant.check.status)];
+    ++counts["run " + std::to_string(run)];
   }
   std::string summary;
   for (const auto& [what, n] : counts) summary += (summary.empty() ? "" : ", ") + what + ": " + std::to_string(n);
