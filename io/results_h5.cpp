@@ -256,9 +256,7 @@ void ResultsH5::write(const ParticleSnapshot& snapshot) {
     write_scalar_attribute(group.get(), "time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, snapshot.time, path_, name);
     write_scalar_attribute(group.get(), "step", H5T_STD_I64LE, H5T_NATIVE_INT64, snapshot.step, path_, name);
     for (const Field& field : fields) bytes += write_field(group.get(), name, snapshot.count, field, path_);
-    // Complete only once the data is in the file: flushed, then marked and
-    // flushed again (the mark fits in the group's header, written already).
-    if (H5Fflush(file_, H5F_SCOPE_GLOBAL) < 0) fail(path_, "cannot flush " + name);
+    // Complete only now: written last, then flushed.
     write_scalar_attribute(group.get(), "complete", H5T_STD_I32LE, H5T_NATIVE_INT, 1, path_, name);
     if (H5Fflush(file_, H5F_SCOPE_GLOBAL) < 0) fail(path_, "cannot flush after " + name);
   } catch (const std::runtime_error&) {
