@@ -9,6 +9,7 @@
 #include <spdlog/sinks/dist_sink.h>
 #include <spdlog/spdlog.h>
 
+#include "app/interrupt.hpp"
 #include "core/errors.hpp"
 #include "core/number_text.hpp"
 #include "discretisation/shape_functions.hpp"
@@ -18,6 +19,8 @@
 #include "engine/simulation.hpp"
 #include "engine/stable_time_step.hpp"
 #include "io/checkpoint_file.hpp"
+#include "io/memory_estimate.hpp"
+#include "io/output_lock.hpp"
 #include "io/results_h5.hpp"
 #include "io/timeseries_csv.hpp"
 #include "io/xdmf.hpp"
@@ -131,6 +134,11 @@ void log_system(spdlog::logger& log, const Case& c, const Simulation<D, Shape>& 
       log.info("body '{}': initial stress per particle from {}", body.name, body.particles->source);
     }
   }
+  const MemoryEstimate estimate = estimate_memory(c);
+  log.info("{}", estimate_text(estimate));
+  if (estimate.steps > long_run_steps) {
+    log.warn("a long run: {:.3g} steps (more than {:.0e})", estimate.steps, long_run_steps);
+  }
   const TimeStepLimit limits = time_step_limit(c.system, scheme);
   const StableStep& stable = limits.wave;
   if (c.dt_auto) {
@@ -195,8 +203,20 @@ RunSummary run(const Case& c, const RunOptions& options, const std::string& fres
   const Scheme& scheme = scheme_named(c.scheme);
   Simulation<D, Shape> sim(c.system, scheme.wiring, c.dt_auto ? 0.0 : c.dt);
   auto& system = sim.system();
+  std::optional<Reference> reference = c.reference;
+  if (reference) reference->initialise(system);  // with its own checks, before anything is written
+  // From here the output directory is this run's (io/output_lock.hpp), and
+  // an interrupt lets the run finish its step.
   const auto& dir = c.output.directory;
   const auto checkpoint_path = dir / checkpoint_file_name;
+  // A restart that cannot be made says why before anything is touched.
+  if (options.write_results && options.restart == Restart::from_checkpoint) checkpoint_of(c);
+  std::optional<OutputLock> lock;
+  std::optional<FinishBeforeExit> finish_before_exit;
+  if (options.write_results) {
+    lock.emplace(dir, "case " + c.file.string());
+    finish_before_exit.emplace();
+  }
 
   RunSummary summary;
   summary.case_name = c.name;
@@ -215,12 +235,9 @@ RunSummary run(const Case& c, const RunOptions& options, const std::string& fres
   const std::int64_t planned_steps =
       c.dt_auto ? static_cast<std::int64_t>(std::ceil(c.end_time / c.dt)) : c.steps;
   const std::int64_t every = c.output.every > 0 ? c.output.every : std::max<std::int64_t>(1, planned_steps / 20);
-  std::optional<Reference> reference = c.reference;
   std::int64_t sample_every = 1;
-  if (reference) {
-    reference->initialise(system);
-    if (reference->samples() > 0) sample_every = std::max<std::int64_t>(1, planned_steps / reference->samples());
-  }
+  if (reference && reference->samples() > 0)
+    sample_every = std::max<std::int64_t>(1, planned_steps / reference->samples());
   const std::size_t body_count = c.system.bodies.size();
   std::vector<std::string> body_names;
   for (const auto& b : c.system.bodies) body_names.push_back(b.name);
@@ -308,17 +325,23 @@ RunSummary run(const Case& c, const RunOptions& options, const std::string& fres
       if (options.restart == Restart::from_checkpoint) throw;
       RunOptions fresh = options;
       fresh.restart = Restart::no;
+      finish_before_exit.reset();
+      lock.reset();  // the fresh run takes it again
       return run<D, Shape>(c, fresh, e.what());
     }
   }
 
+  // The directory marked as this run's (summary.json "running"); a fresh
+  // run removes the earlier run's results, a restart continues them.
   if (options.write_results) {
-    std::error_code error;
-    std::filesystem::create_directories(dir, error);
-    if (error) {
-      throw CaseError("output directory " + dir.string() + ": cannot create it (" + error.message() +
-                      "); set output.directory or --output");
+    summary.status = "running";
+    if (restart) {
+      remove_stale_temporaries(dir);
+      write_summary(dir / "summary.json", summary);
+    } else {
+      start_output(dir, summary);
     }
+    summary.status = "completed";
   }
   const auto log = run_logger(options.write_results ? std::optional(dir / "run.log") : std::nullopt,
                               options.log_to_console, !restart);
@@ -480,15 +503,15 @@ RunSummary run(const Case& c, const RunOptions& options, const std::string& fres
     if (diffusion) dt = std::min(dt, diffusion_dt);
     return std::min(dt, c.end_time - system.t);
   };
-  if (!restart) {
-    sim.measure_speed();
-    write_output();
-    last_written = system.step;
-  }
+  if (!restart) sim.measure_speed();
   auto last_progress = Clock::now();
   const auto loop_start = Clock::now();
   const double loop_start_time = system.t;
   try {
+    if (!restart) {
+      write_output();
+      last_written = system.step;
+    }
     while (!done()) {
       if (options.interrupt && options.interrupt->load()) {
         std::string checkpoint;
@@ -544,6 +567,19 @@ RunSummary run(const Case& c, const RunOptions& options, const std::string& fres
     }
     log->error("{}", e.what());
     throw;
+  } catch (const std::exception& e) {
+    // An output file could not be written (a full disk) or memory ran out:
+    // one line naming what failed; the summary says so if it can still be
+    // written, and what was written before stays readable.
+    const std::string message =
+        fmt::format("step {} (t = {:.6g} s): {}", system.step, system.t, failure_text(e));
+    log->error("{}", message);
+    try {
+      finish("failed: " + message);
+    } catch (const std::exception&) {
+      // The disk that failed the output may fail the summary too.
+    }
+    throw SimulationError(message);
   }
   finish("completed");
   if (system.nonlocal.unsettled_steps > 0) {
@@ -576,6 +612,11 @@ RunSummary run(const Case& c, const RunOptions& options, const std::string& fres
 }
 
 }  // namespace
+
+std::string failure_text(const std::exception& e) {
+  if (dynamic_cast<const std::bad_alloc*>(&e)) return "out of memory (std::bad_alloc)";
+  return e.what();
+}
 
 RunSummary run_case(const Case& c, const RunOptions& options) {
   return with_dimension_and_shape(c.system.dimension, c.system.shape_function,

@@ -2,8 +2,10 @@
 // the summary. The one entry point the program, the tests and the bench use.
 #pragma once
 #include <atomic>
+#include <exception>
 #include <filesystem>
 #include <optional>
+#include <string>
 
 #include "io/case_file.hpp"
 #include "io/summary_json.hpp"
@@ -42,5 +44,8 @@ RunSummary run_case(const Case& c, const RunOptions& options);
 
 // Logs the model a case builds, without running it ("flowmpm check").
 void describe_case(const Case& c);
+
+// A failure in one line: what() or, for std::bad_alloc, "out of memory".
+std::string failure_text(const std::exception& e);
 
 }  // namespace flowmpm

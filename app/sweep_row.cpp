@@ -6,6 +6,7 @@
 
 #include "app/run_case.hpp"
 #include "io/atomic_file.hpp"
+#include "io/output_lock.hpp"
 
 namespace flowmpm {
 namespace {
@@ -119,11 +120,19 @@ std::optional<SweepRow> run_sweep_case(const Sweep& sweep, std::size_t i, tbb::t
     row.wall_seconds = s.step_loop_seconds;
     row.particle_steps_per_second = s.particle_steps_per_second;
     row.errors = s.errors;
+  } catch (const OutputInUse& e) {
+    // Another process runs this case (the same sweep started twice): its
+    // folder is not ours to write in.
+    row.message = e.what();
+    return row;
   } catch (const std::exception& e) {
     // A run stopped by the interrupt did not fail: it runs again next time.
     if (interrupt && interrupt->load()) return std::nullopt;
-    row.message = e.what();
+    row.message = failure_text(e);
   }
+  // A case that failed before its run made its folder (while the model was
+  // built) still gets its row there.
+  std::filesystem::create_directories(c.output.directory);
   write_file_atomically(c.output.directory / row_file, sweep_row_text(sweep, i, row));
   return row;
 }

@@ -1,7 +1,6 @@
 // flowmpm: run or check an explicit MPM case described by a TOML file, or
 // run a sweep of cases.
 #include <algorithm>
-#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -15,21 +14,21 @@
 #include <tbb/global_control.h>
 #include <tbb/info.h>
 
+#include "app/interrupt.hpp"
 #include "app/run_case.hpp"
 #include "app/run_sweep.hpp"
 #ifdef FLOWMPM_MPI
 #include "app/run_sweep_mpi.hpp"
 #endif
 #include "core/errors.hpp"
+#include "io/memory_estimate.hpp"
+#include "io/output_lock.hpp"
 #include "io/sweep_file.hpp"
 
 namespace {
 
-std::atomic<bool> interrupted{false};
-void on_signal(int) { interrupted = true; }
-
 struct Arguments {
-  std::string command, case_file, output, restart;
+  std::string command, case_file, output, restart, max_memory;
   int threads = 0;  // 0: all cores
   int jobs = 1;
   bool quiet = false;
@@ -90,6 +89,18 @@ Arguments parse(int argc, char** argv) {
         ->type_name("KEY=VALUE")
         ->allow_extra_args(false);
   };
+  const auto max_memory = [&](CLI::App* command) {
+    command
+        ->add_option("--max-memory", a.max_memory,
+                     "the memory a case may take (default: what the machine has available); a case estimated "
+                     "to need more is rejected")
+        ->type_name("SIZE")
+        ->check([](const std::string& text) {
+          return flowmpm::parse_memory_size(text) ? std::string()
+                                                  : "expected a size such as 512M, 2G or 1.5G (K, M, G, T: "
+                                                    "powers of 1024), got " + text;
+        });
+  };
 
   CLI::App* run = app.add_subcommand(
       "run", "run a case; writes results.h5, results.xdmf (open in ParaView), timeseries.csv and summary.json");
@@ -102,11 +113,14 @@ Arguments parse(int argc, char** argv) {
       ->type_name("DIR")
       ->excludes(output);
   overrides(run);
+  max_memory(run);
   quiet(run);
 
   CLI::App* check = app.add_subcommand("check", "read and validate a case and describe the model it builds");
   check->add_option("case", a.case_file, "the case file (TOML)")->type_name("CASE.toml");
+  check->add_option("--output", a.output, "output directory (as run takes it; checked to be writable)");
   overrides(check);
+  max_memory(check);
 
   CLI::App* sweep = app.add_subcommand(
       "sweep",
@@ -118,6 +132,7 @@ Arguments parse(int argc, char** argv) {
           ->check(CLI::Range(1, 1024));
   threads(sweep);
   sweep->add_option("--output", a.output, "output directory (overrides the sweep file's output)");
+  max_memory(sweep);
   quiet(sweep);
   CLI::Option* mpi = sweep->add_flag(
       "--mpi", a.mpi,
@@ -193,7 +208,9 @@ int sweep(const Arguments& args, int threads, int& argc, char**& argv) {
   options.jobs = args.jobs;
   options.threads = threads;
   options.shard = args.shard;
-  options.interrupt = &interrupted;
+  options.interrupt = &flowmpm::interrupt_requested();
+  // A sweep stops its running cases after their current step.
+  const flowmpm::FinishBeforeExit finish_before_exit;
   try {
     flowmpm::SweepSummary summary;
     if (args.collect) {
@@ -208,14 +225,12 @@ int sweep(const Arguments& args, int threads, int& argc, char**& argv) {
     if (summary.interrupted) return 130;
     return summary.failed > 0 || summary.missing > 0 ? 2 : 0;
   } catch (const std::exception& e) {
-    spdlog::error("{}", e.what());
+    spdlog::error("{}", flowmpm::failure_text(e));
     return 2;
   }
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+int run_command(int argc, char** argv) {
   const Arguments args = parse(argc, argv);
   // The log (progress, warnings, errors) goes to stderr; stdout carries only
   // what a command prints as its result ("check": CASE: ok).
@@ -227,10 +242,7 @@ int main(int argc, char** argv) {
                                         : static_cast<int>(tbb::info::default_concurrency());
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
 
-  // Ctrl-C or a termination request: finish the current step, keep results
-  // and write a checkpoint.
-  std::signal(SIGINT, on_signal);
-  std::signal(SIGTERM, on_signal);
+  if (!args.max_memory.empty()) flowmpm::set_memory_limit(flowmpm::parse_memory_size(args.max_memory));
   if (args.command == "sweep") return sweep(args, threads, argc, argv);
 
   flowmpm::Case c;
@@ -242,6 +254,7 @@ int main(int argc, char** argv) {
     c = flowmpm::read_case(args.case_file, args.overrides);
     if (!args.output.empty()) c.output.directory = args.output;
     if (!args.restart.empty()) c.output.directory = args.restart;
+    flowmpm::check_output_directory(c.output.directory);
     if (args.command == "check") {
       flowmpm::describe_case(c);
       std::cout << args.case_file << ": ok\n";
@@ -250,11 +263,14 @@ int main(int argc, char** argv) {
   } catch (const flowmpm::CaseError& e) {
     spdlog::error("{}", e.what());
     return 1;
+  } catch (const std::exception& e) {
+    spdlog::error("{}: {}", args.case_file, flowmpm::failure_text(e));
+    return 2;
   }
 
   flowmpm::RunOptions options;
   options.threads = threads;
-  options.interrupt = &interrupted;
+  options.interrupt = &flowmpm::interrupt_requested();
   if (!args.restart.empty()) options.restart = flowmpm::Restart::from_checkpoint;
   options.setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - read_start).count();
   try {
@@ -263,10 +279,27 @@ int main(int argc, char** argv) {
     spdlog::error("{}", e.what());
     return 1;
   } catch (const flowmpm::SimulationError&) {
-    return interrupted ? 130 : 2;  // run_case logged it
+    return flowmpm::interrupt_requested() ? 130 : 2;  // run_case logged it
   } catch (const std::exception& e) {
-    spdlog::error("{}", e.what());
+    spdlog::error("{}: {}", args.case_file, flowmpm::failure_text(e));
     return 2;
   }
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // Before anything is read: an early Ctrl-C or SIGTERM ends the program
+  // with status 130 and a message (app/interrupt.hpp).
+  flowmpm::install_interrupt_handlers();
+  // Nothing escapes as an uncaught exception (which would abort).
+  try {
+    return run_command(argc, argv);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "flowmpm: %s\n", flowmpm::failure_text(e).c_str());
+  } catch (...) {
+    std::fprintf(stderr, "flowmpm: an unknown error\n");
+  }
+  return 2;
 }

@@ -14,8 +14,10 @@
 #include "engine/schemes.hpp"
 #include "engine/stable_time_step.hpp"
 #include "engine/take_snapshot.hpp"
+#include "io/case_limits.hpp"
 #include "io/case_reader.hpp"
 #include "io/digest.hpp"
+#include "io/memory_estimate.hpp"
 #include "io/particle_file.hpp"
 
 namespace flowmpm {
@@ -125,8 +127,9 @@ std::vector<std::string> default_fields(const SystemSpec& c) {
 
 void read_analysis(TableReader t, Case& c) {
   SystemSpec& s = c.system;
-  s.dimension = static_cast<int>(t.integer("dimension"));
-  t.require(s.dimension >= 1 && s.dimension <= 3, "dimension", "1, 2 or 3");
+  const std::int64_t dimension = t.integer("dimension");
+  t.require(dimension >= 1 && dimension <= 3, "dimension", "1, 2 or 3");
+  s.dimension = static_cast<int>(dimension);
   c.scheme = t.choice("scheme", scheme_names(), "usl");
   s.shape_function = t.choice("shape_function", shape_function_names(), "linear");
   if (t.has("stress_state")) {
@@ -160,10 +163,14 @@ void read_analysis(TableReader t, Case& c) {
     }
     if (t.has("steps")) {
       c.steps = t.integer("steps");
-      t.require(c.steps >= 1, "steps", "a positive number of steps");
+      t.require(c.steps >= 1 && c.steps <= max_steps, "steps",
+                std::string("a positive number of steps, at most ") + max_steps_text);
     } else {
       const double end_time = t.number("end_time");
       t.require(end_time > 0.0, "end_time", "a positive end time in s");
+      t.require(end_time / c.dt <= static_cast<double>(max_steps), "end_time",
+                "at most " + std::string(max_steps_text) + " steps of dt (end_time / dt = " +
+                    readable_text(end_time / c.dt) + ")");
       const double steps = std::round(end_time / c.dt);
       t.require(steps >= 1.0 && std::abs(steps * c.dt - end_time) <= 1e-9 * end_time, "end_time",
                 "a whole number of time steps (end_time / dt = " + readable_text(end_time / c.dt) + ")");
@@ -213,7 +220,14 @@ Vec3 read_spacing(TableReader& t, const SystemSpec& c, const BoxShape& bounds) {
   if (t.has("particles_per_cell")) {
     const std::int64_t n = t.integer("particles_per_cell");
     t.require(n >= 1 && n <= 16, "particles_per_cell", "1 to 16 particles per cell per axis");
-    for (int d = 0; d < c.dimension; ++d) spacing[d] = c.grid.cell_size[d] / static_cast<double>(n);
+    for (int d = 0; d < c.dimension; ++d) {
+      spacing[d] = c.grid.cell_size[d] / static_cast<double>(n);
+      // A box thinner than a spacing would hold no lattice point.
+      if (t.has("max") && spacing[d] > (bounds.max[d] - bounds.min[d]) * (1.0 + 1e-9)) {
+        t.fail("max", "a box at least one particle spacing (cell_size / particles_per_cell = " +
+                          readable_text(spacing[d]) + " m) thick along " + axis_names[d]);
+      }
+    }
   } else {
     spacing = per_axis(t, "spacing", c.dimension);
     for (int d = 0; d < c.dimension; ++d) {
@@ -401,6 +415,9 @@ void read_node_set(TableReader t, SystemSpec& c, std::size_t index) {
       if (v.has(axis_names[d])) s.velocity[d] = v.time_function(axis_names[d], "a velocity in m/s");
     }
     v.reject_unknown_keys();
+    if (std::ranges::none_of(s.velocity, [](const auto& f) { return f.has_value(); })) {
+      t.fail("velocity", "a velocity for at least one axis, e.g. { y = 0.0 }");
+    }
   }
   t.reject_unknown_keys();
   c.node_sets.push_back(s);
@@ -497,8 +514,10 @@ void read_damping(TableReader t, SystemSpec& c) {
 
 void read_output(TableReader t, Case& c) {
   c.output.directory = t.string_or("directory", "results/" + c.name);
+  t.require(is_clean_path(c.output.directory.string()), "directory", "a path without control characters");
   c.output.every = t.integer_or("every", 0);
-  t.require(c.output.every >= 0, "every", "a number of steps >= 0 (0: about 20 over the run)");
+  t.require(c.output.every >= 1 || !t.has("every"), "every",
+            "a number of steps >= 1 (leave it out for about 20 output steps over the run)");
   c.output.checkpoint_every = t.integer_or("checkpoint_every", 0);
   t.require(c.output.checkpoint_every >= 0, "checkpoint_every",
             "a number of steps >= 0 between checkpoints (0: a checkpoint only when interrupted)");
@@ -555,6 +574,10 @@ Case read_case(const std::filesystem::path& file, const std::vector<std::string>
   TableReader t(root, "", file.string(), sources);
   c.system.source = file.string();
   c.name = t.string_or("name", file.stem().string());
+  if (t.has("name")) {
+    t.require(is_plain_name(c.name), "name",
+              "a name that can be a directory's (no / or \\, not . or .., no control character)");
+  }
   read_analysis(t.table("analysis"), c);
   read_grid(t.table("grid"), c.system);
 
@@ -595,6 +618,8 @@ Case read_case(const std::filesystem::path& file, const std::vector<std::string>
   }
   t.reject_unknown_keys();
 
+  check_memory(c, t);
+
   // The explicit step is stable only below a fraction of the time a P wave
   // takes to cross the smallest cell, and, with transport, below the
   // explicit diffusion limit (engine/stable_time_step.hpp).
@@ -629,6 +654,10 @@ Case read_case(const std::filesystem::path& file, const std::vector<std::string>
                               (limits.diffusion_governs() ? diffusion_limit + " governs; " + wave_limit
                                                           : wave_limit + " governs; " + diffusion_limit));
     }
+  }
+  if (c.dt_auto && c.end_time / c.dt > static_cast<double>(max_steps)) {
+    analysis.fail("end_time", "at most " + std::string(max_steps_text) + " steps (end_time over the first dt, " +
+                                  readable_text(c.dt) + " s, is " + readable_text(c.end_time / c.dt) + ")");
   }
   // The viscous damping's share of the update, v (1 - c dt), must not
   // reverse the velocity.

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 namespace flowmpm {
@@ -20,7 +21,7 @@ std::string describe(const toml::node& node) {
     case toml::node_type::integer: return "the integer " + std::to_string(*node.value<std::int64_t>());
     case toml::node_type::floating_point: {
       std::ostringstream s;
-      s << "the number " << *node.value<double>();
+      s << "the number " << *node.value_exact<double>();
       return s.str();
     }
     case toml::node_type::boolean: return *node.value<bool>() ? "true" : "false";
@@ -42,6 +43,31 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
     }
   }
   return row[b.size()];
+}
+
+// Numbers the engine can compute with. Integers beyond 2^53 have no
+// exact double. Magnitudes outside [1e-100, 1e100] (other than 0) would
+// under- or overflow what the engine makes of them (a modulus over a
+// density, squared, times dt squared): doubles span about 1e-308 to 1e308,
+// and the cube of a number inside the bounds stays inside that range.
+constexpr std::int64_t largest_exact_integer = std::int64_t{1} << 53;
+constexpr double largest_number = 1e100, smallest_number = 1e-100;
+constexpr const char* number_bounds =
+    "a finite number of magnitude 0 or between 1e-100 and 1e100 (an integer up to 2^53 = 9007199254740992)";
+
+std::optional<double> usable_number(const toml::node& node) {
+  if (const auto* i = node.as_integer()) {
+    // Compared as integers: 2^53 + 1 rounds to 2^53 as a double.
+    const std::int64_t value = i->get();
+    if (value > largest_exact_integer || value < -largest_exact_integer) return std::nullopt;
+    return static_cast<double>(value);
+  }
+  const auto* f = node.as_floating_point();
+  if (!f) return std::nullopt;
+  const double value = f->get();
+  const double size = std::abs(value);
+  if (!std::isfinite(value) || size > largest_number || (size != 0.0 && size < smallest_number)) return std::nullopt;
+  return value;
 }
 
 }  // namespace
@@ -114,9 +140,9 @@ const toml::node* TableReader::node(std::string_view key) {
 double TableReader::number(std::string_view key) {
   const toml::node& n = required(key);
   if (!n.is_number()) fail_at(n, key, "a number");
-  const double value = *n.value<double>();
-  if (!std::isfinite(value)) fail_at(n, key, "a finite number");
-  return value;
+  const std::optional<double> value = usable_number(n);
+  if (!value) fail_at(n, key, number_bounds);
+  return *value;
 }
 
 std::int64_t TableReader::integer(std::string_view key) {
@@ -150,8 +176,9 @@ std::vector<double> TableReader::numbers(std::string_view key, std::size_t count
   if (!array || array->size() != count) fail_at(n, key, expected);
   std::vector<double> values;
   for (const toml::node& item : *array) {
-    if (!item.is_number() || !std::isfinite(*item.value<double>())) fail_at(n, key, expected);
-    values.push_back(*item.value<double>());
+    const std::optional<double> value = usable_number(item);
+    if (!value) fail_at(n, key, expected + ", each " + number_bounds);
+    values.push_back(*value);
   }
   return values;
 }
@@ -178,13 +205,11 @@ TimeFunction TableReader::time_function(std::string_view key, std::string_view w
   TimeFunction f;
   for (const toml::node& p : *points) {
     const toml::array* pair = p.as_array();
-    if (!pair || pair->size() != 2 || !pair->get(0)->is_number() || !pair->get(1)->is_number()) {
-      fail_at(n, key, expected);
-    }
-    const double time = *pair->get(0)->value<double>(), value = *pair->get(1)->value<double>();
-    if (!std::isfinite(time) || !std::isfinite(value)) fail_at(n, key, expected);
-    if (!f.points.empty() && time <= f.points.back().first) fail_at(n, key, expected);
-    f.points.emplace_back(time, value);
+    if (!pair || pair->size() != 2) fail_at(n, key, expected);
+    const std::optional<double> time = usable_number(*pair->get(0)), value = usable_number(*pair->get(1));
+    if (!time || !value) fail_at(n, key, expected + ", each " + number_bounds);
+    if (!f.points.empty() && *time <= f.points.back().first) fail_at(n, key, expected);
+    f.points.emplace_back(*time, *value);
   }
   return f;
 }

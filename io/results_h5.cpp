@@ -1,8 +1,13 @@
 #include "io/results_h5.hpp"
 
+#include <fcntl.h>
 #include <hdf5.h>
+#include <sys/stat.h>
+#include <sys/statvfs.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cinttypes>
 #include <cstdio>
 #include <cstdlib>
@@ -39,13 +44,27 @@ herr_t keep_innermost(unsigned n, const H5E_error2_t* error, void* data) {
   return 0;
 }
 
-// Throws with the innermost message of HDF5's error stack, which names the
-// actual cause (e.g. "unable to open file: ... errno = 2, ...").
+// The cause in HDF5's innermost message, in a few words: the system's
+// error when it names one ("... errno = 28, error message = 'No space left
+// on device', ..." gives "No space left on device"), else the message's
+// first line.
+std::string cause(const std::string& detail) {
+  const std::string marker = "error message = '";
+  if (const auto at = detail.find(marker); at != std::string::npos) {
+    const auto begin = at + marker.size();
+    return detail.substr(begin, detail.find('\'', begin) - begin);
+  }
+  return detail.substr(0, detail.find('\n'));
+}
+
+// Throws, in one line, what failed and the innermost cause on HDF5's error
+// stack (e.g. "No space left on device").
 [[noreturn]] void fail(const std::string& file, const std::string& what) {
   std::string detail;
   H5Ewalk2(H5E_DEFAULT, H5E_WALK_UPWARD, keep_innermost, &detail);
+  H5Eclear2(H5E_DEFAULT);
   std::string message = "HDF5 file " + file + ": " + what;
-  if (!detail.empty()) message += " (" + detail + ")";
+  if (!detail.empty()) message += " (" + cause(detail) + ")";
   throw std::runtime_error(message);
 }
 
@@ -229,6 +248,13 @@ ResultsH5::ResultsH5(const std::filesystem::path& path, const Continuation& from
 
 ResultsH5::ResultsH5(const std::filesystem::path& path, const ResultsMetadata& m)
     : file_(H5I_INVALID_HID), path_(path.string()) {
+  // HDF5 closes what is still open at exit; after a write failed for lack
+  // of space, the HDF5 1.10 of Debian 12 crashes doing so (a segmentation
+  // fault in H5F__close_cb) although the file was closed. Everything is
+  // closed and flushed by the destructors, so the exit handler is not
+  // needed; this must come before the first HDF5 call of the process.
+  static const bool no_exit_handler = H5dont_atexit() >= 0;
+  (void)no_exit_handler;
   // Errors are reported by exceptions; HDF5 must not print its own stack.
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   Handle file(H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
@@ -288,6 +314,42 @@ void ResultsH5::write(const ParticleSnapshot& snapshot) {
   if (!written_.empty() && snapshot.count > index_length_)
     throw std::invalid_argument("HDF5 file " + path_ + ": " + name + " has more particles than the first step");
 
+  // Room for the step first. HDF5 cannot undo a step that the disk filled
+  // up in the middle of: its metadata is then left inconsistent, and the
+  // whole file may no longer open. So a full disk stops the run between
+  // steps, while every step in the file is whole: the file system must have
+  // the step's data twice over (HDF5's metadata, the XDMF index and
+  // timeseries.csv follow it) and 1 MiB, and results.h5 gets its share
+  // allocated ahead, so that another process filling the disk meanwhile
+  // cannot take it.
+  std::uintmax_t step_bytes = 0;
+  for (const Field& field : fields) step_bytes += field.size * field.value_bytes;
+  const double needed = 2.0 * static_cast<double>(step_bytes) + 1024.0 * 1024.0;
+  const auto no_room = [&](double room) {
+    throw std::runtime_error("HDF5 file " + path_ + ": no room for " + name + " (" + std::strerror(ENOSPC) + ": " +
+                             std::to_string(static_cast<long long>(needed / 1024)) + " kB needed" +
+                             (room >= 0 ? ", " + std::to_string(static_cast<long long>(room / 1024)) + " kB free"
+                                        : std::string()) +
+                             ")");
+  };
+  struct statvfs disk {};
+  if (::statvfs(path_.c_str(), &disk) == 0) {
+    const double room = static_cast<double>(disk.f_bavail) * static_cast<double>(disk.f_frsize);
+    if (room < needed) no_room(room);
+  }
+  if (const int fd = ::open(path_.c_str(), O_WRONLY | O_CLOEXEC); fd >= 0) {
+    struct stat file {};
+    // FALLOC_FL_KEEP_SIZE: blocks allocated past the end, the size (which
+    // HDF5 checks) unchanged. File systems without fallocate rely on the
+    // check above alone.
+    const bool reserved = ::fstat(fd, &file) == 0 &&
+                          ::fallocate(fd, FALLOC_FL_KEEP_SIZE, file.st_size,
+                                      static_cast<off_t>(2 * step_bytes + 64 * 1024)) == 0;
+    const int error = errno;
+    ::close(fd);
+    if (!reserved && (error == ENOSPC || error == EDQUOT)) no_room(-1.0);
+  }
+
   // The connectivity 0..n-1, once: every step's topology reads its first n.
   std::uintmax_t bytes = 0;
   if (written_.empty()) {
@@ -301,14 +363,22 @@ void ResultsH5::write(const ParticleSnapshot& snapshot) {
     index_length_ = snapshot.count;
   }
 
-  Handle group(H5Gcreate2(file_, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
-  if (!group.valid()) fail(path_, "cannot create group " + name);
-  write_scalar_attribute(group.get(), "time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, snapshot.time, path_, name);
-  write_scalar_attribute(group.get(), "step", H5T_STD_I64LE, H5T_NATIVE_INT64, snapshot.step, path_, name);
-  for (const Field& field : fields) bytes += write_field(group.get(), name, snapshot.count, field, path_);
-  // Complete only now: written last, then flushed.
-  write_scalar_attribute(group.get(), "complete", H5T_STD_I32LE, H5T_NATIVE_INT, 1, path_, name);
-  if (H5Fflush(file_, H5F_SCOPE_GLOBAL) < 0) fail(path_, "cannot flush after " + name);
+  try {
+    Handle group(H5Gcreate2(file_, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+    if (!group.valid()) fail(path_, "cannot create group " + name);
+    write_scalar_attribute(group.get(), "time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, snapshot.time, path_, name);
+    write_scalar_attribute(group.get(), "step", H5T_STD_I64LE, H5T_NATIVE_INT64, snapshot.step, path_, name);
+    for (const Field& field : fields) bytes += write_field(group.get(), name, snapshot.count, field, path_);
+    // Complete only now: written last, then flushed.
+    write_scalar_attribute(group.get(), "complete", H5T_STD_I32LE, H5T_NATIVE_INT, 1, path_, name);
+    if (H5Fflush(file_, H5F_SCOPE_GLOBAL) < 0) fail(path_, "cannot flush after " + name);
+  } catch (const std::runtime_error&) {
+    // A step is complete or absent: the partial group is unlinked (if the
+    // file can still take that; a reader skips a group not marked complete).
+    H5Ldelete(file_, name.c_str(), H5P_DEFAULT);
+    H5Eclear2(H5E_DEFAULT);
+    throw;
+  }
   written_.push_back({snapshot.step, snapshot.time, snapshot.count});
   fields_ = std::move(layout);
   bytes_ += bytes;

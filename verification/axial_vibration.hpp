@@ -22,6 +22,7 @@
 // (e = 5 %) is at its 1 % floor.
 #pragma once
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <numbers>
 #include <string>
@@ -45,8 +46,9 @@ struct AxialVibration {
     r.x_fixed = t.number("fixed_end");
     r.length = t.positive("length", "the bar length in m");
     r.v0 = t.positive("amplitude", "the velocity amplitude in m/s");
-    r.mode = static_cast<int>(t.integer_or("mode", 1));
-    t.require(r.mode >= 1, "mode", "a mode number >= 1");
+    const std::int64_t mode = t.integer_or("mode", 1);
+    t.require(mode >= 1 && mode <= 1000000, "mode", "a mode number from 1 to 10^6");
+    r.mode = static_cast<int>(mode);
     const LinearElastic& m = elastic_material(t, context);
     const double c = std::sqrt(m.parameters.youngs_modulus / m.parameters.density);
     r.beta = (2 * r.mode - 1) * std::numbers::pi / (2.0 * r.length);
