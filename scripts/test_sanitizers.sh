@@ -2,8 +2,9 @@
 # Tests built with AddressSanitizer and UndefinedBehaviorSanitizer (GCC's
 # -fsanitize=address,undefined, -O1) in build-asan/, apart from the Release
 # build in build/. Any report ends the process that made it with a failure
-# (halt_on_error), so a report fails its test. Called by scripts/test.sh
-# after the Release suite; runs alone after scripts/setup.sh --tests.
+# (halt_on_error), so a report fails its test. Run it after
+# scripts/setup.sh --tests (or scripts/test.sh); it is not part of
+# scripts/test.sh, whose CI run it would more than double (README "Set-up").
 #   scripts/test_sanitizers.sh            the subset below
 #   scripts/test_sanitizers.sh TEST ...   these test programs instead
 # The subset: the tests that drive the flowmpm program over its whole
