@@ -210,7 +210,8 @@ RunSummary run(const Case& c, const RunOptions& options, const std::string& fres
   const auto& dir = c.output.directory;
   const auto checkpoint_path = dir / checkpoint_file_name;
   // A restart that cannot be made says why before anything is touched.
-  if (options.write_results && options.restart == Restart::from_checkpoint) checkpoint_of(c);
+  std::optional<StateRecords> asked_checkpoint;
+  if (options.write_results && options.restart == Restart::from_checkpoint) asked_checkpoint = checkpoint_of(c);
   std::optional<OutputLock> lock;
   std::optional<FinishBeforeExit> finish_before_exit;
   if (options.write_results) {
@@ -307,7 +308,7 @@ RunSummary run(const Case& c, const RunOptions& options, const std::string& fres
                                                   std::filesystem::exists(checkpoint_path)));
   if (restart) {
     try {
-      const StateRecords records = checkpoint_of(c);
+      const StateRecords records = asked_checkpoint ? std::move(*asked_checkpoint) : checkpoint_of(c);
       try {
         restore_carried_state(records, system);
         visit_loop_state(StateReader(records));

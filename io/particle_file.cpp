@@ -11,6 +11,7 @@
 
 #include "core/errors.hpp"
 #include "core/registry.hpp"
+#include "io/hdf5_handle.hpp"
 
 namespace flowmpm {
 namespace {
@@ -143,23 +144,6 @@ ParticleList read_csv(const std::filesystem::path& path, int dimension) {
   return list;
 }
 
-// Owns an HDF5 identifier.
-class Handle {
- public:
-  Handle(hid_t id, herr_t (*close)(hid_t)) : id_(id), close_(close) {}
-  ~Handle() {
-    if (id_ >= 0) close_(id_);
-  }
-  Handle(const Handle&) = delete;
-  Handle& operator=(const Handle&) = delete;
-  hid_t get() const { return id_; }
-  bool valid() const { return id_ >= 0; }
-
- private:
-  hid_t id_;
-  herr_t (*close_)(hid_t);
-};
-
 herr_t collect_name(hid_t, const char* name, const H5L_info_t*, void* data) {
   static_cast<std::vector<std::string>*>(data)->emplace_back(name);
   return 0;
@@ -173,9 +157,9 @@ std::vector<double> read_dataset(hid_t h5, const std::string& file, const std::s
     if (required) throw CaseError(file + ": missing dataset \"" + name + "\"; expected " + expected);
     return {};
   }
-  Handle dataset(H5Dopen2(h5, name.c_str(), H5P_DEFAULT), H5Dclose);
+  Hdf5Handle dataset(H5Dopen2(h5, name.c_str(), H5P_DEFAULT), H5Dclose);
   if (!dataset.valid()) throw CaseError(file + ": \"" + name + "\" is not a dataset; expected " + expected);
-  Handle space(H5Dget_space(dataset.get()), H5Sclose);
+  Hdf5Handle space(H5Dget_space(dataset.get()), H5Sclose);
   const int rank = H5Sget_simple_extent_ndims(space.get());
   hsize_t dims[2] = {0, 0};
   if (rank != (columns == 0 ? 1 : 2) || H5Sget_simple_extent_dims(space.get(), dims, nullptr) < 0 ||
@@ -204,7 +188,7 @@ std::vector<double> read_dataset(hid_t h5, const std::string& file, const std::s
 ParticleList read_h5(const std::filesystem::path& path, int dimension) {
   const std::string file = path.string();
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  Handle h5(H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+  Hdf5Handle h5(H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
   if (!h5.valid()) throw CaseError(file + ": cannot open it as an HDF5 file");
   std::vector<std::string> names;
   H5Literate(h5.get(), H5_INDEX_NAME, H5_ITER_INC, nullptr, collect_name, &names);

@@ -16,28 +16,12 @@
 #include <stdexcept>
 #include <utility>
 
+#include "io/hdf5_handle.hpp"
+
 namespace flowmpm {
 namespace {
 
 static_assert(sizeof(hid_t) == sizeof(long long), "ResultsH5 keeps its hid_t in a long long");
-
-// Owns one HDF5 identifier and closes it with `close` (H5Gclose, H5Dclose...).
-class Handle {
- public:
-  Handle(hid_t id, herr_t (*close)(hid_t)) : id_(id), close_(close) {}
-  ~Handle() {
-    if (id_ >= 0) close_(id_);
-  }
-  Handle(const Handle&) = delete;
-  Handle& operator=(const Handle&) = delete;
-  hid_t get() const { return id_; }
-  bool valid() const { return id_ >= 0; }
-  hid_t release() { return std::exchange(id_, H5I_INVALID_HID); }
-
- private:
-  hid_t id_;
-  herr_t (*close_)(hid_t);
-};
 
 herr_t keep_innermost(unsigned n, const H5E_error2_t* error, void* data) {
   if (n == 0 && error->desc != nullptr) *static_cast<std::string*>(data) = error->desc;
@@ -72,9 +56,9 @@ template <typename T>
 void write_scalar_attribute(hid_t object, const char* name, hid_t file_type, hid_t memory_type,
                             const T& value, const std::string& file, const std::string& where) {
   const std::string what = "cannot write attribute " + where + "@" + name;
-  Handle space(H5Screate(H5S_SCALAR), H5Sclose);
+  Hdf5Handle space(H5Screate(H5S_SCALAR), H5Sclose);
   if (!space.valid()) fail(file, what);
-  Handle attribute(H5Acreate2(object, name, file_type, space.get(), H5P_DEFAULT, H5P_DEFAULT),
+  Hdf5Handle attribute(H5Acreate2(object, name, file_type, space.get(), H5P_DEFAULT, H5P_DEFAULT),
                    H5Aclose);
   if (!attribute.valid() || H5Awrite(attribute.get(), memory_type, &value) < 0) fail(file, what);
 }
@@ -84,15 +68,15 @@ void write_scalar_attribute(hid_t object, const char* name, hid_t file_type, hid
 void write_string_attribute(hid_t object, const char* name, const std::vector<std::string>& values, bool array,
                             const std::string& file, const std::string& where) {
   const std::string what = "cannot write attribute " + where + "@" + name;
-  Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
+  Hdf5Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
   if (!type.valid() || H5Tset_size(type.get(), H5T_VARIABLE) < 0 || H5Tset_cset(type.get(), H5T_CSET_UTF8) < 0)
     fail(file, what);
   const hsize_t n = values.size();
-  Handle space(array ? H5Screate_simple(1, &n, nullptr) : H5Screate(H5S_SCALAR), H5Sclose);
+  Hdf5Handle space(array ? H5Screate_simple(1, &n, nullptr) : H5Screate(H5S_SCALAR), H5Sclose);
   if (!space.valid()) fail(file, what);
   std::vector<const char*> pointers;
   for (const std::string& v : values) pointers.push_back(v.c_str());
-  Handle attribute(H5Acreate2(object, name, type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+  Hdf5Handle attribute(H5Acreate2(object, name, type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
   if (!attribute.valid() || H5Awrite(attribute.get(), type.get(), pointers.data()) < 0) fail(file, what);
 }
 
@@ -117,9 +101,9 @@ std::uintmax_t write_field(hid_t group, const std::string& group_name, std::size
                            const Field& field, const std::string& file) {
   const std::string where = group_name + "/" + field.name;
   const hsize_t dims[2] = {count, field.components};
-  Handle space(H5Screate_simple(field.components == 1 ? 1 : 2, dims, nullptr), H5Sclose);
+  Hdf5Handle space(H5Screate_simple(field.components == 1 ? 1 : 2, dims, nullptr), H5Sclose);
   if (!space.valid()) fail(file, "cannot create dataspace for " + where);
-  Handle dataset(H5Dcreate2(group, field.name, field.file_type, space.get(), H5P_DEFAULT,
+  Hdf5Handle dataset(H5Dcreate2(group, field.name, field.file_type, space.get(), H5P_DEFAULT,
                             H5P_DEFAULT, H5P_DEFAULT),
                  H5Dclose);
   if (!dataset.valid()) fail(file, "cannot create dataset " + where);
@@ -137,7 +121,7 @@ std::uintmax_t write_field(hid_t group, const std::string& group_name, std::size
 template <typename T>
 bool read_attribute(hid_t object, const char* name, hid_t memory_type, T& value) {
   if (H5Aexists(object, name) <= 0) return false;
-  Handle attribute(H5Aopen(object, name, H5P_DEFAULT), H5Aclose);
+  Hdf5Handle attribute(H5Aopen(object, name, H5P_DEFAULT), H5Aclose);
   return attribute.valid() && H5Aread(attribute.get(), memory_type, &value) >= 0;
 }
 
@@ -166,21 +150,21 @@ struct StoredStep {
 
 // The step groups of an open file, in step order (their names are the steps, zero-padded).
 std::vector<StoredStep> stored_steps(hid_t file, const std::string& path) {
-  Handle steps(H5Gopen2(file, "/steps", H5P_DEFAULT), H5Gclose);
+  Hdf5Handle steps(H5Gopen2(file, "/steps", H5P_DEFAULT), H5Gclose);
   if (!steps.valid()) fail(path, "has no group /steps");
   std::vector<StoredStep> stored;
   for (const std::string& name : link_names(steps.get())) {
     StoredStep s;
     s.name = "/steps/" + name;
-    Handle group(H5Gopen2(steps.get(), name.c_str(), H5P_DEFAULT), H5Gclose);
+    Hdf5Handle group(H5Gopen2(steps.get(), name.c_str(), H5P_DEFAULT), H5Gclose);
     if (group.valid()) {
       int complete = 0;
       s.complete = read_attribute(group.get(), "complete", H5T_NATIVE_INT, complete) && complete == 1 &&
                    read_attribute(group.get(), "step", H5T_NATIVE_INT64, s.step) &&
                    read_attribute(group.get(), "time", H5T_NATIVE_DOUBLE, s.time);
       s.datasets = link_names(group.get());
-      Handle position(H5Dopen2(group.get(), "position", H5P_DEFAULT), H5Dclose);
-      Handle space(position.valid() ? H5Dget_space(position.get()) : H5I_INVALID_HID, H5Sclose);
+      Hdf5Handle position(H5Dopen2(group.get(), "position", H5P_DEFAULT), H5Dclose);
+      Hdf5Handle space(position.valid() ? H5Dget_space(position.get()) : H5I_INVALID_HID, H5Sclose);
       hsize_t dims[2] = {0, 0};
       if (space.valid() && H5Sget_simple_extent_dims(space.get(), dims, nullptr) >= 1) s.count = dims[0];
     }
@@ -222,7 +206,7 @@ void ResultsH5::check_continuation(const std::filesystem::path& path, const Cont
   if (!std::filesystem::is_regular_file(path)) {
     throw std::runtime_error("HDF5 file " + name + ": not found, so the run cannot continue from the checkpoint");
   }
-  Handle file(H5Fopen(name.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+  Hdf5Handle file(H5Fopen(name.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
   if (!file.valid()) fail(name, "cannot open it to continue it");
   kept_steps(stored_steps(file.get(), name), from, name);
 }
@@ -230,7 +214,7 @@ void ResultsH5::check_continuation(const std::filesystem::path& path, const Cont
 ResultsH5::ResultsH5(const std::filesystem::path& path, const Continuation& from)
     : file_(H5I_INVALID_HID), path_(path.string()) {
   check_continuation(path, from);
-  Handle file(H5Fopen(path_.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), H5Fclose);
+  Hdf5Handle file(H5Fopen(path_.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), H5Fclose);
   if (!file.valid()) fail(path_, "cannot open it to continue it");
   const std::vector<StoredStep> stored = stored_steps(file.get(), path_);
   for (const StoredStep& s : kept_steps(stored, from, path_)) written_.push_back({s.step, s.time, s.count});
@@ -257,7 +241,7 @@ ResultsH5::ResultsH5(const std::filesystem::path& path, const ResultsMetadata& m
   (void)no_exit_handler;
   // Errors are reported by exceptions; HDF5 must not print its own stack.
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  Handle file(H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
+  Hdf5Handle file(H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
   if (!file.valid()) fail(path_, "cannot create file");
   const hid_t root = file.get();
   write_scalar_attribute(root, "format_version", H5T_STD_I32LE, H5T_NATIVE_INT, format_version, path_, "/");
@@ -274,7 +258,7 @@ ResultsH5::ResultsH5(const std::filesystem::path& path, const ResultsMetadata& m
   write_string_attribute(root, "vector_components", "x y z (padded with 0 below 3D)", path_, "/");
   write_string_attribute(root, "rows", "particle id: row i is the same particle at every step", path_, "/");
   write_string_attribute(root, "materials", m.materials, true, path_, "/");
-  Handle steps(H5Gcreate2(root, "/steps", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+  Hdf5Handle steps(H5Gcreate2(root, "/steps", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
   if (!steps.valid() || H5Fflush(root, H5F_SCOPE_GLOBAL) < 0) fail(path_, "cannot create group /steps");
   file_ = file.release();
 }
@@ -355,7 +339,7 @@ void ResultsH5::write(const ParticleSnapshot& snapshot) {
   if (written_.empty()) {
     std::vector<std::int32_t> index(snapshot.count);
     for (std::size_t i = 0; i < index.size(); ++i) index[i] = static_cast<std::int32_t>(i);
-    Handle root(H5Gopen2(file_, "/", H5P_DEFAULT), H5Gclose);
+    Hdf5Handle root(H5Gopen2(file_, "/", H5P_DEFAULT), H5Gclose);
     bytes += write_field(root.get(), "", snapshot.count,
                          Field{particle_index + 1, index.data(), index.size(), 1, H5T_STD_I32LE, H5T_NATIVE_INT32,
                                sizeof(std::int32_t), nullptr},
@@ -364,7 +348,7 @@ void ResultsH5::write(const ParticleSnapshot& snapshot) {
   }
 
   try {
-    Handle group(H5Gcreate2(file_, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+    Hdf5Handle group(H5Gcreate2(file_, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
     if (!group.valid()) fail(path_, "cannot create group " + name);
     write_scalar_attribute(group.get(), "time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, snapshot.time, path_, name);
     write_scalar_attribute(group.get(), "step", H5T_STD_I64LE, H5T_NATIVE_INT64, snapshot.step, path_, name);
