@@ -35,6 +35,10 @@ int write_all(int fd, std::string_view contents) {
 }  // namespace
 
 void write_file_atomically(const std::filesystem::path& path, std::string_view contents) {
+  write_file_atomically(path, [&](const TextSink& sink) { sink(contents); });
+}
+
+void write_file_atomically(const std::filesystem::path& path, const std::function<void(const TextSink&)>& produce) {
   // The counter keeps temporary names distinct between threads of one process.
   static std::atomic<unsigned> counter{0};
   std::filesystem::path tmp = path;
@@ -43,8 +47,27 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view c
   const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
   if (fd < 0) fail(path, "cannot create temporary file", std::strerror(errno));
 
+  // Pieces gathered into writes of about 64 kB; the first failure is kept
+  // and the rest of the text dropped.
   const char* step = "write failed";
-  int error = write_all(fd, contents);
+  int error = 0;
+  std::string buffer;
+  const auto flush = [&] {
+    if (error == 0) error = write_all(fd, buffer);
+    buffer.clear();
+  };
+  try {
+    produce([&](std::string_view piece) {
+      buffer += piece;
+      if (buffer.size() >= 65536) flush();
+    });
+  } catch (...) {
+    ::close(fd);
+    std::error_code ignored;
+    std::filesystem::remove(tmp, ignored);
+    throw;
+  }
+  flush();
   if (error == 0 && ::fsync(fd) != 0) {
     error = errno;
     step = "fsync failed";

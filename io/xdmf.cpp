@@ -45,19 +45,21 @@ const char* attribute_type(int components) {
 
 }  // namespace
 
-std::string xdmf_document(const std::string& h5_name, const ResultsH5& results) {
+void xdmf_document(const std::string& h5_name, const ResultsH5& results, const TextSink& sink) {
   const std::vector<OutputField>& fields = results.fields();
   if (!results.written().empty() &&
       std::ranges::none_of(fields, [](const OutputField& f) { return std::string_view(f.name) == "position"; }))
     throw std::invalid_argument("XDMF needs the position field: it is the grid's geometry");
   const std::string file = xml_escape(h5_name);
 
-  std::string out =
+  sink(
       "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n"
       "<Xdmf Version=\"3.0\">\n"
       "  <Domain>\n"
-      "    <Grid Name=\"particles\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+      "    <Grid Name=\"particles\" GridType=\"Collection\" CollectionType=\"Temporal\">\n");
+  std::string out;  // one step's grid at a time
   for (const ResultsH5::WrittenStep& step : results.written()) {
+    out.clear();
     const std::string group = ResultsH5::group_name(step.step);
     const std::string count = std::to_string(step.count);
     const auto dimensions = [&](int components) {
@@ -93,17 +95,23 @@ std::string xdmf_document(const std::string& h5_name, const ResultsH5& results) 
       out += "        </Attribute>\n";
     }
     out += "      </Grid>\n";
+    sink(out);
   }
-  out +=
+  sink(
       "    </Grid>\n"
       "  </Domain>\n"
-      "</Xdmf>\n";
-  return out;
+      "</Xdmf>\n");
+}
+
+std::string xdmf_document(const std::string& h5_name, const ResultsH5& results) {
+  std::string text;
+  xdmf_document(h5_name, results, [&](std::string_view piece) { text += piece; });
+  return text;
 }
 
 void write_xdmf(const std::filesystem::path& path, const std::string& h5_name,
                 const ResultsH5& results) {
-  write_file_atomically(path, xdmf_document(h5_name, results));
+  write_file_atomically(path, [&](const TextSink& sink) { xdmf_document(h5_name, results, sink); });
 }
 
 namespace {

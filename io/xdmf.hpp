@@ -6,16 +6,21 @@
 #include <string>
 #include <vector>
 
+#include "io/atomic_file.hpp"
 #include "io/results_h5.hpp"
 
 namespace flowmpm {
 
-// The XDMF text for the steps written so far; `h5_name` is the HDF5 file's
-// name relative to the XDMF file. Position is the grid's geometry: throws
-// std::invalid_argument when it is not among the results' fields.
+// The XDMF text for the steps written so far, handed to `sink` a step at a
+// time; `h5_name` is the HDF5 file's name relative to the XDMF file.
+// Position is the grid's geometry: throws std::invalid_argument when it is
+// not among the results' fields.
+void xdmf_document(const std::string& h5_name, const ResultsH5& results, const TextSink& sink);
+// The same text as one string.
 std::string xdmf_document(const std::string& h5_name, const ResultsH5& results);
 
-// Writes xdmf_document(...) to `path` atomically.
+// Writes the XDMF text to `path` atomically, never holding it whole (it
+// grows by about 2.4 kB per output step).
 void write_xdmf(const std::filesystem::path& path, const std::string& h5_name,
                 const ResultsH5& results);
 

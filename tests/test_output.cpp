@@ -339,6 +339,29 @@ TEST_CASE("XDMF indexes every written step") {
   CHECK_THROWS_AS(xdmf_document("other.h5", no_position), std::invalid_argument);
 }
 
+// Issue 15, finding 10: the index is rewritten when the number of steps has
+// doubled (or after its interval, here too long to matter) and at the end,
+// not at every output step: 1,001 steps, 11 rewrites. It is streamed to the
+// file a step at a time, and reads as the document held whole would.
+TEST_CASE("the XDMF index is rewritten when the steps double, and written a step at a time") {
+  TempDir dir;
+  ResultsH5 results(dir.path / "results.h5", metadata());
+  XdmfIndex index(dir.path / "results.xdmf", "results.h5", 1e9);
+  for (std::int64_t k = 0; k <= 1000; ++k) {
+    results.write(make_snapshot(10 * k, 1e-3 * static_cast<double>(k), 2));
+    index.update(results);
+  }
+  CHECK(index.rewrites() == 10);  // at 1, 2, 4, ..., 512 steps
+  index.finish(results);
+  CHECK(index.rewrites() == 11);
+  const std::string text = read_text(dir.path / "results.xdmf");
+  CHECK(text == xdmf_document("results.h5", results));
+  CHECK(contains(text, "results.h5:/steps/00010000/position"));
+  std::size_t pieces = 0;
+  xdmf_document("results.h5", results, [&](std::string_view) { ++pieces; });
+  CHECK(pieces == 1001 + 2);  // the head, one per step, the tail
+}
+
 TEST_CASE("timeseries CSV: header, and rows that parse back exactly") {
   TempDir dir;
   const fs::path path = dir.path / "timeseries.csv";
@@ -462,6 +485,25 @@ TEST_CASE("write_file_atomically replaces files and leaves no temporary behind")
   write_file_atomically(path, "");
   CHECK(read_text(path).empty());
   std::vector<fs::path> entries;
+  for (const fs::directory_entry& entry : fs::directory_iterator(dir.path))
+    entries.push_back(entry.path().filename());
+  CHECK(entries == std::vector<fs::path>{"out.txt"});
+
+  // A text handed in pieces, longer than the 64 kB gathered per write; a
+  // producer that throws part way leaves the file as it was.
+  const std::string piece(1000, 'x');
+  write_file_atomically(path, [&](const TextSink& sink) {
+    for (int k = 0; k < 200; ++k) sink(piece);
+  });
+  CHECK(read_text(path) == std::string(200000, 'x'));
+  CHECK_THROWS_AS(write_file_atomically(path,
+                                        [&](const TextSink& sink) {
+                                          sink("partial");
+                                          throw std::invalid_argument("stop");
+                                        }),
+                  std::invalid_argument);
+  CHECK(read_text(path) == std::string(200000, 'x'));
+  entries.clear();
   for (const fs::directory_entry& entry : fs::directory_iterator(dir.path))
     entries.push_back(entry.path().filename());
   CHECK(entries == std::vector<fs::path>{"out.txt"});
