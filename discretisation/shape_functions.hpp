@@ -48,17 +48,23 @@ decltype(auto) with_shape_function(std::string_view name, F&& f) {
   return detail::with_shape_in(name, f, ShapeFunctions{});
 }
 
+// Calls f.template operator()<D>() for a dimension, 1, 2 or 3.
+template <class F>
+decltype(auto) with_dimension(int dimension, F&& f) {
+  switch (dimension) {
+    case 1: return f.template operator()<1>();
+    case 2: return f.template operator()<2>();
+    case 3: return f.template operator()<3>();
+  }
+  throw std::invalid_argument("dimension " + std::to_string(dimension) + " is not 1, 2 or 3");
+}
+
 // Calls f.template operator()<D, Shape>() for a dimension (1, 2 or 3) and a
 // shape function: the one dispatch from run-time choices to compiled code.
 template <class F>
 decltype(auto) with_dimension_and_shape(int dimension, std::string_view shape, F&& f) {
   return with_shape_function(shape, [&]<class Shape>() -> decltype(auto) {
-    switch (dimension) {
-      case 1: return f.template operator()<1, Shape>();
-      case 2: return f.template operator()<2, Shape>();
-      case 3: return f.template operator()<3, Shape>();
-    }
-    throw std::invalid_argument("dimension " + std::to_string(dimension) + " is not 1, 2 or 3");
+    return with_dimension(dimension, [&]<int D>() -> decltype(auto) { return f.template operator()<D, Shape>(); });
   });
 }
 
