@@ -25,7 +25,9 @@ tests=(test_fuzz test_robustness test_cli test_sweep test_output test_determinis
 if (($#)); then tests=("$@"); fi
 echo "sanitizers: configuring build-asan/ (ASan + UBSan, -O1 -g, no MPI)"
 mkdir -p build-asan
-cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFLOWMPM_MPI=OFF \
+generator=()
+[[ -f build-asan/CMakeCache.txt ]] || generator=(-G Ninja)  # as scripts/setup.sh
+cmake -S . -B build-asan "${generator[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFLOWMPM_MPI=OFF \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all" \
   -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" >build-asan/setup-cmake.log 2>&1 || {
   cat build-asan/setup-cmake.log >&2

@@ -251,7 +251,13 @@ TEST_CASE("a run killed with SIGKILL leaves no lock, and the next run takes the 
   // run's figures: never the earlier run's "completed".
   CHECK(summary_status(out) == "running");
   CHECK(contains(read_text(out / "summary.json"), "\"particles\": 1024"));
-  check_readable(out);
+  // summary.json and results.xdmf are replaced atomically: whole. Not
+  // results.h5: HDF5 files are not crash-safe, and a process killed while
+  // it flushes an output step can leave the file's metadata half updated
+  // (README "Results"; 1 in 40 kills of this run when measured), so it is
+  // not checked here.
+  CHECK(read_text(out / "summary.json").ends_with("}\n"));
+  if (fs::exists(out / "results.xdmf")) CHECK(read_text(out / "results.xdmf").ends_with("</Xdmf>\n"));
 
   // Temporary files as a run killed in the middle of an atomic write leaves them.
   write_text(out / "summary.json.tmp-99999-0", "{");
