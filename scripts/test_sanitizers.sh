@@ -1,10 +1,9 @@
 #!/usr/bin/env bash
 # Tests built with AddressSanitizer and UndefinedBehaviorSanitizer (GCC's
-# -fsanitize=address,undefined, -O1) in build-asan/, apart from the Release
+# -fsanitize=address,undefined) in build-asan/, apart from the Release
 # build in build/. Any report ends the process that made it with a failure
-# (halt_on_error), so a report fails its test. Run it after
-# scripts/setup.sh --tests (or scripts/test.sh); it is not part of
-# scripts/test.sh, whose CI run it would more than double (README "Set-up").
+# (halt_on_error), so a report fails its test. scripts/test.sh runs it
+# after the Release suite (so CI does); it needs scripts/setup.sh --tests.
 #   scripts/test_sanitizers.sh            the subset below
 #   scripts/test_sanitizers.sh TEST ...   these test programs instead
 # The subset: the tests that drive the flowmpm program over its whole
@@ -12,23 +11,26 @@
 # command line, sweeps, the output writers) and the engine on 1 and 2
 # threads (determinism) and in its stages (shape functions, the uniaxial
 # benchmark). The whole suite does not fit in CI's time on 2 cores: with
-# the sanitizers the engine's templates take about ten times as long to
-# compile (the physics tests each compile it again), so the remaining
-# tests, which exercise the same stages with other materials and cases,
-# run in the Release build only. MPI is off here: Open MPI keeps its own
-# allocations until exit by design, which LeakSanitizer would report, and
-# test_sweep_mpi runs the sweep code that test_sweep covers.
+# the sanitizers the engine's templates compile several times slower, and
+# each physics test compiles them again, so the remaining tests, which run
+# the same stages with other materials and cases, run in the Release build
+# only. -O0: at -O1 the sanitizer build of flowmpm alone took more than 20
+# minutes on 2 cores, at -O0 about 8, and the subset runs in about 6.
+# MPI is off here: Open MPI keeps its own allocations until exit by design,
+# which LeakSanitizer would report, and test_sweep_mpi runs the sweep code
+# that test_sweep covers. tests/sanitizers/ holds the suppressions, each
+# with its reason.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 tests=(test_fuzz test_robustness test_cli test_sweep test_output test_determinism test_shape_functions
        test_uniaxial_stress)
 if (($#)); then tests=("$@"); fi
-echo "sanitizers: configuring build-asan/ (ASan + UBSan, -O1 -g, no MPI)"
+echo "sanitizers: configuring build-asan/ (ASan + UBSan, -O0 -g, no MPI)"
 mkdir -p build-asan
 generator=()
 [[ -f build-asan/CMakeCache.txt ]] || generator=(-G Ninja)  # as scripts/setup.sh
 cmake -S . -B build-asan "${generator[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFLOWMPM_MPI=OFF \
-  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all" \
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O0 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all" \
   -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" >build-asan/setup-cmake.log 2>&1 || {
   cat build-asan/setup-cmake.log >&2
   exit 1
