@@ -47,19 +47,29 @@ void write_file_atomically(const std::filesystem::path& path, const std::functio
   const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
   if (fd < 0) fail(path, "cannot create temporary file", std::strerror(errno));
 
-  // Pieces gathered into writes of about 64 kB; the first failure is kept
-  // and the rest of the text dropped.
+  // Small pieces gathered into writes of about 64 kB, a larger piece (a
+  // whole text given at once: a checkpoint) written as it is, not copied;
+  // the first failure is kept and the rest of the text dropped.
+  constexpr std::size_t gathered = 65536;
   const char* step = "write failed";
   int error = 0;
   std::string buffer;
+  const auto write = [&](std::string_view text) {
+    if (error == 0) error = write_all(fd, text);
+  };
   const auto flush = [&] {
-    if (error == 0) error = write_all(fd, buffer);
+    write(buffer);
     buffer.clear();
   };
   try {
     produce([&](std::string_view piece) {
+      if (piece.size() >= gathered) {
+        flush();
+        write(piece);
+        return;
+      }
       buffer += piece;
-      if (buffer.size() >= 65536) flush();
+      if (buffer.size() >= gathered) flush();
     });
   } catch (...) {
     ::close(fd);
