@@ -2,6 +2,7 @@
 // a scratch directory, running the program, and reading what it wrote.
 #pragma once
 #include <doctest/doctest.h>
+#include <sys/resource.h>
 #include <sys/types.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -41,6 +42,7 @@ struct TempDir {
 struct Result {
   int status = -1;     // exit status; 128 + signal number if killed by a signal
   std::string output;  // stdout and stderr together
+  double peak_resident_bytes = 0.0;  // the program's peak resident size (ru_maxrss)
 };
 
 // A program started by start_program, still running.
@@ -102,8 +104,10 @@ inline Result wait_for(const Running& program) {
   }
   ::close(program.output);
   int status = 0;
-  while (::waitpid(program.pid, &status, 0) < 0 && errno == EINTR) {
+  struct rusage usage {};
+  while (::wait4(program.pid, &status, 0, &usage) < 0 && errno == EINTR) {
   }
+  result.peak_resident_bytes = static_cast<double>(usage.ru_maxrss) * 1024.0;  // ru_maxrss is in kB
   if (WIFEXITED(status)) {
     result.status = WEXITSTATUS(status);
   } else if (WIFSIGNALED(status)) {

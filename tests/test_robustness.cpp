@@ -6,7 +6,6 @@
 #include <doctest/doctest.h>
 #include <hdf5.h>
 #include <signal.h>
-#include <sys/resource.h>
 #include <sys/wait.h>
 
 #include <chrono>
@@ -78,29 +77,6 @@ particles_per_cell = )" + std::to_string(particles_per_cell) +
          R"(
 [output]
 every = )" + std::to_string(every) + "\n";
-}
-
-// A finished flowmpm run and its peak resident size.
-struct PeakRun {
-  int status = -1;  // exit status; -1 if it did not exit
-  std::string output;
-  double peak_bytes = 0.0;
-};
-
-PeakRun run_with_peak(const std::vector<std::string>& arguments, const fs::path& cwd) {
-  std::vector<std::string> argv{FLOWMPM_EXECUTABLE};
-  argv.insert(argv.end(), arguments.begin(), arguments.end());
-  const Running p = start_program(argv, cwd);
-  PeakRun run;
-  char buffer[4096];
-  for (ssize_t n; (n = ::read(p.output, buffer, sizeof buffer)) > 0;) run.output.append(buffer, static_cast<std::size_t>(n));
-  ::close(p.output);
-  int status = 0;
-  struct rusage usage {};
-  REQUIRE(::wait4(p.pid, &status, 0, &usage) == p.pid);
-  if (WIFEXITED(status)) run.status = WEXITSTATUS(status);
-  run.peak_bytes = static_cast<double>(usage.ru_maxrss) * 1024.0;  // ru_maxrss is in kB
-  return run;
 }
 
 // Whether process `pid` runs flowmpm and has installed its handlers for
@@ -495,11 +471,11 @@ spacing = 0.0125
   CHECK(e.particles == doctest::Approx(262144));
   CHECK(e.nodes == doctest::Approx(41.0 * 41 * 41));
 
-  const PeakRun run = run_with_peak({"run", "block.toml", "--threads", "2", "--output", (dir.path / "out").string()},
-                                     dir.path);
+  const Result run = run_flowmpm({"run", "block.toml", "--threads", "2", "--output", (dir.path / "out").string()},
+                                 dir.path);
   INFO(run.output);
   CHECK(run.status == 0);
-  const double peak = run.peak_bytes;
+  const double peak = run.peak_resident_bytes;
   MESSAGE("estimate " << memory_text(e.total_bytes) << ", peak resident " << memory_text(peak));
   // The estimate counts the arrays held at peak; the resident size also has
   // allocator slack and pages the kernel has not reclaimed. Within 30 %
@@ -656,16 +632,17 @@ fields = ["position"]
     const std::string name = "bar" + std::to_string(steps);
     write_text(dir.path / (name + ".toml"), bar(steps));
     const fs::path out = dir.path / name;
-    const PeakRun run = run_with_peak({"run", name + ".toml", "--threads", "1", "--output", out.string()}, dir.path);
+    const std::size_t output_steps = static_cast<std::size_t>(steps / 10 + 1);
+    const Result run = run_flowmpm({"run", name + ".toml", "--threads", "1", "--output", out.string()}, dir.path);
     INFO(run.output);
     REQUIRE(run.status == 0);
     check_readable(out);
-    CHECK(xdmf_steps(out / "results.xdmf").size() == static_cast<std::size_t>(steps / 10 + 1));
+    CHECK(xdmf_steps(out / "results.xdmf").size() == output_steps);
     static const std::regex seconds(R"re("output_seconds": ([0-9.eE+-]+))re");
     std::smatch m;
     const std::string summary = read_text(out / "summary.json");
     REQUIRE(std::regex_search(summary, m, seconds));
-    return Measured{run.peak_bytes, std::stod(m[1].str()) / (steps / 10 + 1)};
+    return Measured{run.peak_resident_bytes, std::stod(m[1].str()) / static_cast<double>(output_steps)};
   };
   const Measured shorter = measure(10000), longer = measure(100000);
   MESSAGE("1,001 output steps: peak resident " << shorter.peak_bytes / 1e6 << " MB, " << shorter.seconds_per_output * 1e3
