@@ -15,7 +15,8 @@
 # each physics test compiles them again, so the remaining tests, which run
 # the same stages with other materials and cases, run in the Release build
 # only. -O0: at -O1 the sanitizer build of flowmpm alone took more than 20
-# minutes on 2 cores, at -O0 about 8, and the subset runs in about 6.
+# minutes on 2 cores; at -O0 it and the 8 test programs build in about 10
+# and run in about 8 (measured from a fresh clone).
 # MPI is off here: Open MPI keeps its own allocations until exit by design,
 # which LeakSanitizer would report, and test_sweep_mpi runs the sweep code
 # that test_sweep covers. tests/sanitizers/ holds the suppressions, each
