@@ -25,7 +25,7 @@
 #include "io/output_lock.hpp"
 #include "io/results_h5.hpp"
 #include "io/timeseries_csv.hpp"
-#include "io/xdmf.hpp"
+#include "io/results_index.hpp"
 
 namespace flowmpm::run_internal {
 
@@ -285,22 +285,22 @@ RunSummary run(const Case& c, const RunOptions& options, const std::string& fres
   }
 
   std::optional<ResultsH5> h5;
-  std::optional<XdmfIndex> xdmf;
+  std::optional<ResultsIndex> index;
   std::optional<TimeseriesCsv> csv;
   if (options.write_results) {
+    ResultsMetadata metadata{FLOWMPM_VERSION, source_commit(), c.name, c.file.string(), D,
+                             stress_state_name(system.stress_state), scheme.label, Shape::name, {}};
+    for (const NamedMaterial& m : c.system.materials) metadata.materials.push_back(m.name);
     if (restart) {
       const auto [h5_from, csv_from] = output_continuation();
-      h5.emplace(dir / "results.h5", h5_from);
+      h5.emplace(dir / "results.h5", metadata, h5_from);
       csv.emplace(dir / "timeseries.csv", body_names, reactions, error_names, csv_from);
     } else {
-      ResultsMetadata metadata{FLOWMPM_VERSION, source_commit(), c.name, c.file.string(), D,
-                               stress_state_name(system.stress_state), scheme.label, Shape::name, {}};
-      for (const NamedMaterial& m : c.system.materials) metadata.materials.push_back(m.name);
       h5.emplace(dir / "results.h5", metadata);
       csv.emplace(dir / "timeseries.csv", body_names, reactions, error_names);
     }
-    xdmf.emplace(dir / "results.xdmf", "results.h5");
-    if (restart) xdmf->finish(*h5);  // without the steps written after the checkpoint
+    index.emplace(dir / "results.xdmf");
+    if (restart) index->finish(*h5);  // without the steps written after the checkpoint
   }
   auto balance_error = [&](const Diagnostics& d) {
     const double error = d.energy_balance() - balance_at_start;
@@ -316,7 +316,7 @@ RunSummary run(const Case& c, const RunOptions& options, const std::string& fres
     const double error = balance_error(row);
     if (options.write_results) {
       h5->write(sim.snapshot(c.output.fields));
-      xdmf->update(*h5);
+      index->update(*h5);
       // The error norms so far: over the particles and the samples up to now.
       std::vector<double> errors;
       if (reference)
@@ -368,7 +368,7 @@ RunSummary run(const Case& c, const RunOptions& options, const std::string& fres
     summary.energy_error = energy_scale > 0.0 ? worst_balance_error / energy_scale
                                               : std::numeric_limits<double>::quiet_NaN();
     if (options.write_results) {
-      xdmf->finish(*h5);
+      index->finish(*h5);
       write_summary(dir / "summary.json", summary);
     }
   };

@@ -15,7 +15,7 @@
 //   - the share of each node of the step graph in the 1-thread step (the
 //     rest: sorting and
 //     the time loop);
-//   - the cost of one output step (the default fields to results.h5), in bytes and
+//   - the cost of one output step (the default fields to a step file), in bytes and
 //     microseconds per particle, apart from the step rate.
 // Output steps are not part of this program (see README, output cost).
 // With --transport heat (or both: heat and solvent) the block conducts heat
@@ -120,8 +120,9 @@ double median(std::vector<double> v) {
   return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
 }
 
-// Cost of one output step: the particle snapshot written to results.h5
-// (the default fields), in bytes and seconds per particle.
+// Cost of one output step: the particle snapshot written to its step file
+// (the default fields; flushed to disk and renamed into place), in bytes
+// and seconds per particle.
 template <class Shape>
 std::pair<double, double> output_cost(SystemSpec c) {
   c.keep_initial_positions = true;  // for the displacement field
@@ -130,13 +131,11 @@ std::pair<double, double> output_cost(SystemSpec c) {
   std::filesystem::create_directories(dir);
   ResultsMetadata metadata;  // the materials' names: HDF5 writes no empty attribute
   for (const auto& m : c.materials) metadata.materials.push_back(m.name);
+  ResultsH5 h5(dir / "results.h5", metadata);
   const auto start = Clock::now();
-  {
-    ResultsH5 h5(dir / "results.h5", metadata);
-    h5.write(sim.snapshot(default_output_fields()));
-  }
+  h5.write(sim.snapshot(default_output_fields()));
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  const double bytes = static_cast<double>(std::filesystem::file_size(dir / "results.h5"));
+  const double bytes = static_cast<double>(std::filesystem::file_size(dir / ResultsH5::step_file(0)));
   std::filesystem::remove_all(dir);
   const double n = static_cast<double>(sim.system().particle_count());
   return {bytes / n, seconds / n};

@@ -32,6 +32,46 @@ int write_all(int fd, std::string_view contents) {
   return 0;
 }
 
+// The temporary name beside `path`: NAME.tmp-PID-N (what
+// remove_stale_temporaries, io/output_lock.hpp, recognises). The counter
+// keeps names distinct between threads of one process.
+std::filesystem::path temporary_path(const std::filesystem::path& path) {
+  static std::atomic<unsigned> counter{0};
+  std::filesystem::path tmp = path;
+  tmp += ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
+  return tmp;
+}
+
+// Flushes the file or directory at `path` to disk through a descriptor of
+// its own (`flags`: O_DIRECTORY for a directory); returns 0 or the errno of
+// the failure.
+int flush_to_disk(const std::filesystem::path& path, int flags) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | flags);
+  if (fd < 0) return errno;
+  const int error = ::fsync(fd) != 0 ? errno : 0;
+  ::close(fd);
+  return error;
+}
+
+// Renames the written temporary file `tmp` to `path`, or, when `error` (an
+// errno) says that writing it failed at `step`, removes it; throws naming
+// `path` on any failure.
+void commit(const std::filesystem::path& tmp, const std::filesystem::path& path, const char* step, int error) {
+  std::string reason;
+  if (error == 0) {
+    std::error_code ec;
+    std::filesystem::rename(tmp, path, ec);
+    if (!ec) return;
+    step = "rename failed";
+    reason = ec.message();
+  } else {
+    reason = std::strerror(error);
+  }
+  std::error_code ignored;
+  std::filesystem::remove(tmp, ignored);
+  fail(path, step, reason);
+}
+
 }  // namespace
 
 void write_file_atomically(const std::filesystem::path& path, std::string_view contents) {
@@ -39,11 +79,7 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view c
 }
 
 void write_file_atomically(const std::filesystem::path& path, const std::function<void(const TextSink&)>& produce) {
-  // The counter keeps temporary names distinct between threads of one process.
-  static std::atomic<unsigned> counter{0};
-  std::filesystem::path tmp = path;
-  tmp += ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
-
+  const std::filesystem::path tmp = temporary_path(path);
   const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
   if (fd < 0) fail(path, "cannot create temporary file", std::strerror(errno));
 
@@ -86,19 +122,31 @@ void write_file_atomically(const std::filesystem::path& path, const std::functio
     error = errno;
     step = "close failed";
   }
-  std::string reason;
-  if (error == 0) {
-    std::error_code ec;
-    std::filesystem::rename(tmp, path, ec);
-    if (!ec) return;
-    step = "rename failed";
-    reason = ec.message();
-  } else {
-    reason = std::strerror(error);
+  commit(tmp, path, step, error);
+}
+
+void write_file_atomically_by_name(const std::filesystem::path& path,
+                                   const std::function<void(const std::filesystem::path& temporary)>& write) {
+  const std::filesystem::path tmp = temporary_path(path);
+  try {
+    write(tmp);
+  } catch (...) {
+    // Emptied before it is removed: a writer that failed may hold it open
+    // (HDF5 after a failed close), which would keep its blocks in use.
+    std::error_code ignored;
+    std::filesystem::resize_file(tmp, 0, ignored);
+    std::filesystem::remove(tmp, ignored);
+    throw;
   }
-  std::error_code ignored;
-  std::filesystem::remove(tmp, ignored);
-  fail(path, step, reason);
+  // The library closed the file: its data is flushed to disk before the rename.
+  commit(tmp, path, "flush to disk failed", flush_to_disk(tmp, 0));
+}
+
+void flush_directory(const std::filesystem::path& directory) {
+  if (const int error = flush_to_disk(directory, O_DIRECTORY); error != 0) {
+    throw std::runtime_error("cannot flush the directory " + directory.string() + " to disk: " +
+                             std::strerror(error));
+  }
 }
 
 }  // namespace flowmpm

@@ -100,10 +100,12 @@ std::size_t remove_stale_temporaries(const std::filesystem::path& directory) {
   static const std::regex temporary(R"(.+\.tmp-[0-9]+-[0-9]+)");
   std::size_t removed = 0;
   std::error_code error;
-  for (const auto& entry : std::filesystem::directory_iterator(directory, error)) {
-    const std::string name = entry.path().filename().string();
-    if (!std::regex_match(name, temporary) || !entry.is_regular_file(error)) continue;
-    if (std::filesystem::remove(entry.path(), error)) ++removed;
+  for (const std::filesystem::path& folder : {directory, directory / "steps"}) {
+    for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
+      const std::string name = entry.path().filename().string();
+      if (!std::regex_match(name, temporary) || !entry.is_regular_file(error)) continue;
+      if (std::filesystem::remove(entry.path(), error)) ++removed;
+    }
   }
   return removed;
 }
@@ -111,9 +113,9 @@ std::size_t remove_stale_temporaries(const std::filesystem::path& directory) {
 void start_output(const std::filesystem::path& directory, const RunSummary& running) {
   remove_stale_temporaries(directory);
   write_summary(directory / "summary.json", running);
-  for (const char* name : {"results.xdmf", "results.h5"}) {
+  for (const char* name : {"results.xdmf", "results.h5", "steps"}) {
     std::error_code error;
-    std::filesystem::remove(directory / name, error);
+    std::filesystem::remove_all(directory / name, error);
     if (error) {
       throw std::runtime_error("cannot remove the earlier run's " + (directory / name).string() + ": " +
                                error.message());

@@ -43,7 +43,8 @@ class OutputLock {
 };
 
 // Removes the temporary files that an earlier run, killed in the middle of
-// an atomic write (io/atomic_file.hpp), left in `directory`: NAME.tmp-PID-N.
+// an atomic write (io/atomic_file.hpp), left in `directory` and its steps/:
+// NAME.tmp-PID-N.
 // Only with the directory's lock held: then no other run is writing them.
 // Returns how many were removed.
 std::size_t remove_stale_temporaries(const std::filesystem::path& directory);
@@ -51,9 +52,9 @@ std::size_t remove_stale_temporaries(const std::filesystem::path& directory);
 // Makes a locked output directory ready for a new run: removes stale
 // temporaries, marks the directory with `running` as summary.json (status
 // "running"), so that no earlier run's summary can label the new results,
-// and removes the earlier run's results.xdmf and results.h5. They are
-// unlinked, not truncated: a reader that has the old file open (h5py,
-// ParaView) keeps reading it, and the new run writes a new file.
+// and removes the earlier run's results.xdmf, results.h5 and step files
+// (steps/). They are unlinked, not truncated: a reader that has an old file
+// open (h5py, ParaView) keeps reading it, and the new run writes new files.
 void start_output(const std::filesystem::path& directory, const RunSummary& running);
 
 // What `flowmpm check` can tell without touching anything: throws

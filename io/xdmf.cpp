@@ -1,7 +1,6 @@
 #include "io/xdmf.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <stdexcept>
 #include <string_view>
 
@@ -26,7 +25,7 @@ std::string xml_escape(const std::string& text) {
   return out;
 }
 
-// A reference to one dataset of a step group in the HDF5 file.
+// A reference to one dataset of an HDF5 file.
 std::string data_item(const std::string& h5_path, const std::string& dimensions,
                       const char* number_type, int precision) {
   return "<DataItem Format=\"HDF\" Dimensions=\"" + dimensions + "\" NumberType=\"" +
@@ -61,6 +60,7 @@ void xdmf_document(const std::string& h5_name, const ResultsH5& results, const T
   for (const ResultsH5::WrittenStep& step : results.written()) {
     out.clear();
     const std::string group = ResultsH5::group_name(step.step);
+    const std::string step_file = xml_escape(ResultsH5::step_file(step.step));
     const std::string count = std::to_string(step.count);
     const auto dimensions = [&](int components) {
       return components == 1 ? count : count + " " + std::to_string(components);
@@ -81,7 +81,7 @@ void xdmf_document(const std::string& h5_name, const ResultsH5& results, const T
     out += "          </DataItem>\n";
     out += "        </Topology>\n";
     out += "        <Geometry GeometryType=\"XYZ\">\n";
-    out += "          " + data_item(file + ":" + group + "/position", dimensions(3), "Float", 8) +
+    out += "          " + data_item(step_file + ":/position", dimensions(3), "Float", 8) +
            "\n";
     out += "        </Geometry>\n";
     for (const OutputField& f : fields) {
@@ -89,7 +89,7 @@ void xdmf_document(const std::string& h5_name, const ResultsH5& results, const T
       out += "        <Attribute Name=\"" + std::string(f.name) + "\" AttributeType=\"" +
              attribute_type(f.components) + "\" Center=\"Node\">\n";
       out += "          " +
-             data_item(file + ":" + group + "/" + f.name, dimensions(f.components), f.integer ? "Int" : "Float",
+             data_item(step_file + ":/" + f.name, dimensions(f.components), f.integer ? "Int" : "Float",
                        f.integer ? 4 : 8) +
              "\n";
       out += "        </Attribute>\n";
@@ -112,31 +112,6 @@ std::string xdmf_document(const std::string& h5_name, const ResultsH5& results) 
 void write_xdmf(const std::filesystem::path& path, const std::string& h5_name,
                 const ResultsH5& results) {
   write_file_atomically(path, [&](const TextSink& sink) { xdmf_document(h5_name, results, sink); });
-}
-
-namespace {
-double steady_seconds() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-}  // namespace
-
-XdmfIndex::XdmfIndex(std::filesystem::path path, std::string h5_name, double interval_seconds)
-    : path_(std::move(path)), h5_name_(std::move(h5_name)), interval_(interval_seconds) {}
-
-void XdmfIndex::update(const ResultsH5& results) {
-  const std::size_t steps = results.written().size();
-  if (steps >= 2 * indexed_ || steady_seconds() - last_rewrite_ >= interval_) rewrite(results);
-}
-
-void XdmfIndex::finish(const ResultsH5& results) {
-  if (results.written().size() != indexed_) rewrite(results);
-}
-
-void XdmfIndex::rewrite(const ResultsH5& results) {
-  write_xdmf(path_, h5_name_, results);
-  indexed_ = results.written().size();
-  last_rewrite_ = steady_seconds();
-  ++rewrites_;
 }
 
 }  // namespace flowmpm

@@ -2,13 +2,17 @@
 
     python3 h5py_check.py RESULTS.xdmf PARTICLES DIMENSION
 
-Asserts the root metadata; the connectivity /particle_index = 0..n-1; at every
-step: complete, the id column 0..n-1 (rows in particle id order), the
+Asserts the root metadata; the connectivity /particle_index = 0..n-1; that
+/steps links every step file of steps/ and nothing else; at every step,
+read through results.h5's links: its step number, the id column 0..n-1
+(rows in particle id order), the
 displacement equal to the position minus the first step's position, bit for
 bit (a row that changed particle between steps would break it), vectors
 padded with z = 0 below 3D, and tensors in the order the datasets declare.
 Exit status 0 when all pass, 1 otherwise.
 """
+import os
+import re
 import sys
 
 import h5py
@@ -26,7 +30,7 @@ def main(argv):
 
     with h5py.File(xdmf[: -len(".xdmf")] + ".h5", "r") as f:
         a = f.attrs
-        check(a["format_version"] == 2, f"format_version {a['format_version']}")
+        check(a["format_version"] == 3, f"format_version {a['format_version']}")
         check(str(a["program"]).startswith("flowmpm "), f"program {a['program']}")
         check(a["dimension"] == dimension, f"dimension {a['dimension']}")
         check(a["tensor_components"] == "xx yy zz xy yz xz", f"tensor_components {a['tensor_components']}")
@@ -35,12 +39,16 @@ def main(argv):
         check(len(a["materials"]) >= 1 and all(isinstance(m, str) for m in a["materials"]),
               f"materials {a['materials']!r}")
         check(np.array_equal(f["particle_index"][()], np.arange(particles)), "particle_index is not 0..n-1")
-        steps = [f["steps"][name] for name in sorted(f["steps"])]
+        names = sorted(f["steps"])
+        files = sorted(n[: -len(".h5")] for n in os.listdir(os.path.join(os.path.dirname(xdmf), "steps"))
+                       if re.fullmatch(r"\d{8}\.h5", n))
+        check(names == files, f"/steps links {names}, steps/ holds {files}")
+        steps = [f["steps"][name] for name in names]
         check(len(steps) >= 2, "fewer than 2 steps")
         x0 = steps[0]["position"][()]
-        for g in steps:
-            where = g.name
-            check(g.attrs["complete"] == 1, f"{where} not complete")
+        for name, g in zip(names, steps):
+            where = "/steps/" + name
+            check(g.attrs["step"] == int(name), f"{where}: step attribute {g.attrs['step']}")
             check(np.array_equal(g["id"][()], np.arange(particles)), f"{where}: id is not 0..n-1")
             position, displacement = g["position"][()], g["displacement"][()]
             check(np.array_equal(displacement, position - x0), f"{where}: displacement != position - initial position")

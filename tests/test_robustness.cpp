@@ -96,8 +96,18 @@ bool catches_interrupts(pid_t pid) {
   return false;
 }
 
-// The step groups of a results.h5 and whether each is marked complete;
-// nullopt if the file does not open.
+// Whether the HDF5 file at `path` opens and its root group carries a
+// numeric attribute `attribute`.
+bool opens_with(const fs::path& path, const char* attribute) {
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (file < 0) return false;
+  const bool has = H5Aexists_by_name(file, "/", attribute, H5P_DEFAULT) > 0;
+  H5Fclose(file);
+  return has;
+}
+
+// The steps that results.h5 links ("00000010", ...) and whether each one's
+// file opens as a step; nullopt if results.h5 does not open.
 std::optional<std::vector<std::pair<std::string, bool>>> h5_steps(const fs::path& path) {
   const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   if (file < 0) return std::nullopt;
@@ -109,13 +119,8 @@ std::optional<std::vector<std::pair<std::string, bool>>> h5_steps(const fs::path
     for (hsize_t i = 0; i < info.nlinks; ++i) {
       char name[64] = {};
       H5Lget_name_by_idx(group, ".", H5_INDEX_NAME, H5_ITER_INC, i, name, sizeof name, H5P_DEFAULT);
-      int complete = 0;
-      const hid_t attribute = H5Aopen_by_name(group, name, "complete", H5P_DEFAULT, H5P_DEFAULT);
-      if (attribute >= 0) {
-        H5Aread(attribute, H5T_NATIVE_INT, &complete);
-        H5Aclose(attribute);
-      }
-      steps.emplace_back(name, complete == 1);
+      steps.emplace_back(name, opens_with(path.parent_path() / "steps" / (std::string(name) + ".h5"), "step") &&
+                                   H5Aexists_by_name(group, name, "time", H5P_DEFAULT) > 0);
     }
     H5Gclose(group);
   }
@@ -126,26 +131,31 @@ std::optional<std::vector<std::pair<std::string, bool>>> h5_steps(const fs::path
 // The step groups that results.xdmf refers to ("00000010", ...).
 std::vector<std::string> xdmf_steps(const fs::path& path) {
   const std::string text = read_text(path);
-  static const std::regex step(R"(/steps/(\d{8})/position)");
+  static const std::regex step(R"(steps/(\d{8})\.h5:/position)");
   std::vector<std::string> steps;
   for (auto it = std::sregex_iterator(text.begin(), text.end(), step); it != std::sregex_iterator(); ++it)
     steps.push_back((*it)[1]);
   return steps;
 }
 
-// Every output file of a directory is whole: results.h5 opens and each of
-// its steps is complete, results.xdmf names only steps results.h5 has, and
-// summary.json (if any) is a closed JSON object.
+// Every output file of a directory is whole: results.h5 opens and each step
+// it links opens, every step file in steps/ opens, results.xdmf names only
+// steps results.h5 links, and summary.json (if any) is a closed JSON object.
 void check_readable(const fs::path& dir) {
   INFO("output directory " << dir.string());
   const auto steps = h5_steps(dir / "results.h5");
   REQUIRE_MESSAGE(steps.has_value(), "results.h5 does not open");
-  for (const auto& [name, complete] : *steps) CHECK_MESSAGE(complete, "step " << name << " is not complete");
+  for (const auto& [name, complete] : *steps) CHECK_MESSAGE(complete, "step " << name << " does not read");
+  static const std::regex step_file(R"(\d{8}\.h5)");
+  for (const auto& entry : fs::directory_iterator(dir / "steps")) {
+    const std::string name = entry.path().filename().string();
+    if (std::regex_match(name, step_file)) CHECK_MESSAGE(opens_with(entry.path(), "step"), name << " does not open");
+  }
   if (fs::exists(dir / "results.xdmf")) {
     for (const std::string& s : xdmf_steps(dir / "results.xdmf")) {
       const bool present =
           std::ranges::any_of(*steps, [&](const auto& step) { return step.first == s && step.second; });
-      CHECK_MESSAGE(present, "results.xdmf names step " << s << ", which results.h5 does not hold complete");
+      CHECK_MESSAGE(present, "results.xdmf names step " << s << ", which results.h5 does not link");
     }
   }
   if (fs::exists(dir / "summary.json")) {
@@ -224,9 +234,11 @@ TEST_CASE("a second run into a directory in use is refused at once and changes n
   CHECK(!fs::exists(out / "flowmpm.lock"));
 }
 
-TEST_CASE("a run killed with SIGKILL leaves no lock, and the next run takes the directory") {
+TEST_CASE("a run killed with SIGKILL leaves whole files and no lock, and the next run takes the directory") {
   TempDir dir("flowmpm_test_robust");
-  write_text(dir.path / "long.toml", resting_block(1000000, 20));
+  // The long case writes an output step (about 90 kB) at every step, so a
+  // kill almost always lands while a step is being written.
+  write_text(dir.path / "long.toml", resting_block(1000000, 1));
   write_text(dir.path / "short.toml", resting_block(40, 20, 1));
   const fs::path out = dir.path / "out";
 
@@ -235,58 +247,92 @@ TEST_CASE("a run killed with SIGKILL leaves no lock, and the next run takes the 
   REQUIRE(summary_status(out) == "completed");
   REQUIRE(contains(read_text(out / "summary.json"), "\"particles\": 256"));
 
-  // A run of the long case, killed once it has written results.
-  const Running killed = start_program({FLOWMPM_EXECUTABLE, "run", "long.toml", "--output", out.string()}, dir.path);
-  REQUIRE(wait_until([&] { return fs::exists(out / "timeseries.csv") && read_text(out / "timeseries.csv").size() > 2000; },
-                     30));
-  ::kill(killed.pid, SIGKILL);
-  CHECK(wait_for(killed).status == 128 + SIGKILL);
-  // The directory says that a run started and did not end, with the new
-  // run's figures: never the earlier run's "completed".
-  CHECK(summary_status(out) == "running");
-  CHECK(contains(read_text(out / "summary.json"), "\"particles\": 1024"));
-  // summary.json and results.xdmf are replaced atomically: whole. Not
-  // results.h5: HDF5 files are not crash-safe, and a process killed while
-  // it flushes an output step can leave the file's metadata half updated
-  // (README "Results"; 1 in 40 kills of this run when measured), so it is
-  // not checked here.
-  CHECK(read_text(out / "summary.json").ends_with("}\n"));
-  if (fs::exists(out / "results.xdmf")) CHECK(read_text(out / "results.xdmf").ends_with("</Xdmf>\n"));
+  // Runs of the long case, killed at different moments once they write
+  // output steps. Every file left is whole: each step file is written under
+  // a temporary name and renamed when complete, and the indexes are replaced
+  // the same way. (With one results.h5 written in place, 1 kill in 40 left
+  // it unreadable: a process killed while HDF5 flushed its metadata.)
+  for (int kill = 0; kill < 6; ++kill) {
+    CAPTURE(kill);
+    fs::remove(out / "timeseries.csv");  // so that only the new run's rows count
+    const Running killed = start_program({FLOWMPM_EXECUTABLE, "run", "long.toml", "--output", out.string()}, dir.path);
+    const std::size_t rows = 5 + 7 * static_cast<std::size_t>(kill);
+    REQUIRE(wait_until(
+        [&] {
+          if (!fs::exists(out / "timeseries.csv")) return false;
+          const std::string text = read_text(out / "timeseries.csv");
+          return static_cast<std::size_t>(std::ranges::count(text, '\n')) > rows;
+        },
+        30));
+    std::this_thread::sleep_for(std::chrono::milliseconds(3 * kill));
+    ::kill(killed.pid, SIGKILL);
+    CHECK(wait_for(killed).status == 128 + SIGKILL);
+    // The directory says that a run started and did not end, with the new
+    // run's figures: never the earlier run's "completed".
+    CHECK(summary_status(out) == "running");
+    CHECK(contains(read_text(out / "summary.json"), "\"particles\": 1024"));
+    CHECK(read_text(out / "results.xdmf").ends_with("</Xdmf>\n"));
+    check_readable(out);
+    const auto steps = h5_steps(out / "results.h5");
+    CHECK(steps->size() >= 1);  // the index was written after the first step
+  }
 
   // Temporary files as a run killed in the middle of an atomic write leaves them.
   write_text(out / "summary.json.tmp-99999-0", "{");
   write_text(out / "results.xdmf.tmp-99999-3", "<Xdmf");
+  write_text(out / "steps" / "00000007.h5.tmp-99999-4", "HDF");
   const Result next = run_flowmpm({"run", "short.toml", "--output", out.string()}, dir.path);
   INFO(next.output);
   CHECK(next.status == 0);
   CHECK(summary_status(out) == "completed");
   CHECK(!fs::exists(out / "summary.json.tmp-99999-0"));
   CHECK(!fs::exists(out / "results.xdmf.tmp-99999-3"));
+  CHECK(!fs::exists(out / "steps" / "00000007.h5.tmp-99999-4"));
   check_readable(out);
+  // Only the new run's steps: 0, 20 and 40.
+  CHECK(h5_steps(out / "results.h5")->size() == 3);
+  CHECK(std::distance(fs::directory_iterator(out / "steps"), fs::directory_iterator()) == 3);
 }
 
-TEST_CASE("a run does not truncate a results.h5 that a reader has open") {
+TEST_CASE("a run does not disturb the earlier results that a reader has open") {
   TempDir dir("flowmpm_test_robust");
   write_text(dir.path / "short.toml", resting_block(40, 20, 1));
+  // The same block moving at 0.5 m/s: 2 mm further at step 40.
+  std::string moving = resting_block(40, 20, 1);
+  moving.replace(moving.find("particles_per_cell = 1\n"), 23, "particles_per_cell = 1\nvelocity = [0.5, 0.0]\n");
+  write_text(dir.path / "moving.toml", moving);
   const fs::path out = dir.path / "out";
   REQUIRE(run_flowmpm({"run", "short.toml", "--output", out.string()}, dir.path).status == 0);
 
-  // A reader (as h5py would) holds the first run's results open while a
+  // A reader (as h5py would) holds the first run's last step open while a
   // second run writes into the same directory.
+  const auto read_position = [](hid_t dataset) {
+    std::vector<double> position(256 * 3);
+    CHECK(H5Dread(dataset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, position.data()) >= 0);
+    return position;
+  };
   const hid_t reader = H5Fopen((out / "results.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   REQUIRE(reader >= 0);
-  const Result second = run_flowmpm({"run", "short.toml", "--output", out.string()}, dir.path);
+  const hid_t dataset = H5Dopen2(reader, "/steps/00000040/position", H5P_DEFAULT);
+  REQUIRE(dataset >= 0);
+  const std::vector<double> first = read_position(dataset);
+  CHECK(first[0] > 0.1);  // the first particle, inside the block
+
+  const Result second = run_flowmpm({"run", "moving.toml", "--output", out.string()}, dir.path);
   INFO(second.output);
   CHECK(second.status == 0);
-  // The reader still reads the first run's steps, and the new file is whole.
-  CHECK(H5Lexists(reader, "/steps/00000040", H5P_DEFAULT) > 0);
-  const hid_t dataset = H5Dopen2(reader, "/steps/00000040/position", H5P_DEFAULT);
-  std::vector<double> position(256 * 3);
-  CHECK(H5Dread(dataset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, position.data()) >= 0);
-  CHECK(position[0] > 0.1);  // the first particle, inside the block
+  // The reader still reads the first run's step; the new files are whole
+  // and hold the second run's.
+  CHECK(read_position(dataset) == first);
   H5Dclose(dataset);
   H5Fclose(reader);
   check_readable(out);
+  const hid_t now = H5Fopen((out / "results.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  const hid_t moved = H5Dopen2(now, "/steps/00000040/position", H5P_DEFAULT);
+  REQUIRE(moved >= 0);
+  CHECK(read_position(moved)[0] == doctest::Approx(first[0] + 0.002).epsilon(1e-6));
+  H5Dclose(moved);
+  H5Fclose(now);
 }
 
 TEST_CASE("a case that fails its checks leaves the directory's earlier results untouched") {
@@ -581,7 +627,7 @@ TEST_CASE("a full disk ends the run with one line naming the file, and what was 
   const std::vector<std::string> errors = error_lines(r.output);
   CHECK(errors.size() == 1);
   CHECK(contains(r.output, expected));
-  CHECK(std::regex_search(r.output, std::regex("results\\.h5|timeseries\\.csv|results\\.xdmf")));
+  CHECK(std::regex_search(r.output, std::regex("steps/\\d{8}\\.h5|results\\.h5|timeseries\\.csv|results\\.xdmf")));
   check_readable(keep);
   const auto steps = h5_steps(keep / "results.h5");
   REQUIRE(steps);
@@ -597,8 +643,9 @@ TEST_CASE("a full disk ends the run with one line naming the file, and what was 
 TEST_CASE("output cost per step and resident memory stay flat over a 100,000-step run") {
   if (address_sanitizer) return;
   TempDir dir("flowmpm_test_robust");
-  // A 1D bar of 32 particles in uniform motion, an output step every 10
-  // steps: 10,000 steps (1,001 output steps) against 100,000 (10,001).
+  // A 1D bar of 32 particles in uniform motion, an output step every 100
+  // steps: 10,000 steps (101 output steps) against 100,000 (1,001, the run
+  // of the finding).
   const auto bar = [](int steps) {
     return R"(name = "long_bar"
 [analysis]
@@ -621,7 +668,7 @@ max = [0.9]
 particles_per_cell = 2
 velocity = [0.01]
 [output]
-every = 10
+every = 100
 fields = ["position"]
 )";
   };
@@ -632,7 +679,7 @@ fields = ["position"]
     const std::string name = "bar" + std::to_string(steps);
     write_text(dir.path / (name + ".toml"), bar(steps));
     const fs::path out = dir.path / name;
-    const std::size_t output_steps = static_cast<std::size_t>(steps / 10 + 1);
+    const std::size_t output_steps = static_cast<std::size_t>(steps / 100 + 1);
     const Result run = run_flowmpm({"run", name + ".toml", "--threads", "1", "--output", out.string()}, dir.path);
     INFO(run.output);
     REQUIRE(run.status == 0);
@@ -645,13 +692,13 @@ fields = ["position"]
     return Measured{run.peak_resident_bytes, std::stod(m[1].str()) / static_cast<double>(output_steps)};
   };
   const Measured shorter = measure(10000), longer = measure(100000);
-  MESSAGE("1,001 output steps: peak resident " << shorter.peak_bytes / 1e6 << " MB, " << shorter.seconds_per_output * 1e3
-                                              << " ms per output step; 10,001: " << longer.peak_bytes / 1e6 << " MB, "
+  MESSAGE("101 output steps: peak resident " << shorter.peak_bytes / 1e6 << " MB, " << shorter.seconds_per_output * 1e3
+                                            << " ms per output step; 1,001: " << longer.peak_bytes / 1e6 << " MB, "
                                               << longer.seconds_per_output * 1e3 << " ms");
-  // Measured on 2 cores: 31.6 and 34.2 MB (0.3 kB per added output step;
-  // the XDMF text alone is 0.7 kB per step), 0.40 and 0.38 ms. Rewriting
-  // the index at every step would make the longer run's mean cost about
-  // ten times the shorter's; the bounds leave room for a loaded machine.
+  // Measured on 2 cores: 20.8 and 20.8 MB, 0.94 and 0.90 ms (a step file
+  // created, flushed to disk and renamed). Rewriting the indexes at every
+  // step would make the longer run's mean cost about ten times the
+  // shorter's; the bounds leave room for a loaded machine.
   CHECK(longer.peak_bytes - shorter.peak_bytes < 5e6);
   CHECK(longer.seconds_per_output < 4.0 * shorter.seconds_per_output);
 }
