@@ -12,9 +12,15 @@ cd "$(dirname "$0")/.."
 packages=(python3 cmake g++ make ninja-build git libtbb-dev libeigen3-dev libhdf5-dev hdf5-tools libspdlog-dev
           doctest-dev libtomlplusplus-dev libcli11-dev gnuplot-nox)
 target=(--target flowmpm)
+mpi=()
 if [[ ${1:-} == --tests ]]; then
   packages+=(python3-h5py python3-paraview libopenmpi-dev openmpi-bin)
   target=()
+  # The suite tests flowmpm sweep --mpi. A build/ configured by the program's
+  # setup, before OpenMPI was installed, has cached that MPI is missing:
+  # forget what it found and search again.
+  mpi=(-DFLOWMPM_MPI=ON)
+  grep -q '^FLOWMPM_MPI:BOOL=OFF' build/CMakeCache.txt 2>/dev/null && mpi+=(-U 'MPI_*')
 elif [[ $# -gt 0 ]]; then
   echo "usage: $0 [--tests]" >&2
   exit 1
@@ -49,7 +55,7 @@ fi
 generator=()
 [[ -f build/CMakeCache.txt ]] || generator=(-G Ninja)
 echo "setup: configuring build/ (Release)"
-cmake -S . -B build "${generator[@]}" -DCMAKE_BUILD_TYPE=Release >build/setup-cmake.log 2>&1 || {
+cmake -S . -B build "${generator[@]}" "${mpi[@]}" -DCMAKE_BUILD_TYPE=Release >build/setup-cmake.log 2>&1 || {
   cat build/setup-cmake.log >&2
   exit 1
 }
