@@ -94,8 +94,8 @@ struct Field {
 };
 
 // Writes one field into `group`.
-void write_field(hid_t group, const std::string& group_name, std::size_t count,
-                           const Field& field, const std::string& file) {
+void write_field(hid_t group, const std::string& group_name, std::size_t count, const Field& field,
+                 const std::string& file) {
   const std::string where = group_name + "/" + field.name;
   const hsize_t dims[2] = {count, field.components};
   Hdf5Handle space(H5Screate_simple(field.components == 1 ? 1 : 2, dims, nullptr), H5Sclose);
@@ -257,13 +257,15 @@ ResultsH5::ResultsH5(const std::filesystem::path& path, const ResultsMetadata& m
   write_index();
 }
 
-std::string ResultsH5::group_name(std::int64_t step) {
-  char name[32];
-  std::snprintf(name, sizeof name, "/steps/%08" PRId64, step);
-  return name;
+std::string ResultsH5::step_label(std::int64_t step) {
+  char label[32];
+  std::snprintf(label, sizeof label, "%08" PRId64, step);
+  return label;
 }
 
-std::string ResultsH5::step_file(std::int64_t step) { return group_name(step).substr(1) + ".h5"; }
+std::string ResultsH5::group_name(std::int64_t step) { return "/steps/" + step_label(step); }
+
+std::string ResultsH5::step_file(std::int64_t step) { return "steps/" + step_label(step) + ".h5"; }
 
 void ResultsH5::write_index() const {
   const std::string file = path_.string();
@@ -300,10 +302,9 @@ void ResultsH5::write_index() const {
       Hdf5Handle steps(H5Gcreate2(root, "/steps", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
       if (!steps.valid()) fail(file, "cannot create group /steps");
       for (const WrittenStep& s : written_) {
-        const std::string name = group_name(s.step);
-        if (H5Lcreate_external(step_file(s.step).c_str(), "/", steps.get(), name.substr(name.rfind('/') + 1).c_str(),
-                               H5P_DEFAULT, H5P_DEFAULT) < 0)
-          fail(file, "cannot link " + name + " to " + step_file(s.step));
+        if (H5Lcreate_external(step_file(s.step).c_str(), "/", steps.get(), step_label(s.step).c_str(), H5P_DEFAULT,
+                               H5P_DEFAULT) < 0)
+          fail(file, "cannot link " + group_name(s.step) + " to " + step_file(s.step));
       }
     }
     close_file(handle, file);

@@ -67,6 +67,9 @@ class ResultsH5 {
   // Rewrites results.h5 with a link to each step written so far.
   void write_index() const;
 
+  // A step's name: its number as 8 digits, e.g. "00000010" (the link's
+  // name in /steps, the step file's stem).
+  static std::string step_label(std::int64_t step);
   // The path of a step's group as read through results.h5, e.g.
   // "/steps/00000010".
   static std::string group_name(std::int64_t step);

@@ -59,14 +59,12 @@ void xdmf_document(const std::string& h5_name, const ResultsH5& results, const T
   std::string out;  // one step's grid at a time
   for (const ResultsH5::WrittenStep& step : results.written()) {
     out.clear();
-    const std::string group = ResultsH5::group_name(step.step);
     const std::string step_file = xml_escape(ResultsH5::step_file(step.step));
     const std::string count = std::to_string(step.count);
     const auto dimensions = [&](int components) {
       return components == 1 ? count : count + " " + std::to_string(components);
     };
-    out += "      <Grid Name=\"step_" + group.substr(group.rfind('/') + 1) +
-           "\" GridType=\"Uniform\">\n";
+    out += "      <Grid Name=\"step_" + ResultsH5::step_label(step.step) + "\" GridType=\"Uniform\">\n";
     out += "        <Time Value=\"" + exact_text(step.time) + "\"/>\n";
     // One vertex per particle. ParaView's default (Xdmf3) reader makes cells
     // only from a connectivity array: the first `count` entries of the
