@@ -1,8 +1,6 @@
-// What app/run_case.cpp shares with the run's time loop. The loop
-// (app/run_simulation.hpp) is the program's longest compilation: it is
-// compiled once per dimension, each in its own translation unit
-// (app/run_case_dimension.cpp.in), so that the three build side by side,
-// and the helpers below once, in app/run_case.cpp.
+// What the files of a run share (app/run_case.cpp, its services and its
+// log): the source commit, the run's logger, the checkpoint of a case and
+// the command that continues it, and the model's description in the log.
 #pragma once
 #include <spdlog/spdlog.h>
 
@@ -12,26 +10,13 @@
 #include <string>
 
 #include "app/run_case.hpp"
-#include "engine/stable_time_step.hpp"
+#include "engine/simulation_base.hpp"
 #include "engine/state_records.hpp"
 
 namespace flowmpm::run_internal {
 
-// The run and the description ("flowmpm check") of a case of dimension D,
-// for its shape function; instantiated in app/run_case_dimension.cpp.in.
-template <int D>
-RunSummary run_case_in(const Case& c, const RunOptions& options);
-template <int D>
-void describe_case_in(const Case& c);
-
 // The git commit the program was built from, "" where unknown.
 const char* source_commit();
-
-// The particle fields a system stores, for the log.
-std::string stored_fields(int dimension, bool heat, bool solvent);
-
-// With transport: both time-step limits and which one governs, for the log.
-std::string time_step_limits(const TimeStepLimit& limits);
 
 // The run's logger: with `console`, the program's console output at the
 // level the default logger has (through a sink of its own that filters at
@@ -49,5 +34,9 @@ std::string restart_command(const Case& c);
 // The checkpoint in the case's output directory, if it is one of this case;
 // throws CaseError naming the file and why not.
 StateRecords checkpoint_of(const Case& c);
+
+// Logs the model: grid, bodies, fields stored, node sets, transport, loads,
+// damping, memory and the time step (app/log_model.cpp).
+void log_model(spdlog::logger& log, const Case& c, const SimulationBase& sim);
 
 }  // namespace flowmpm::run_internal

@@ -118,8 +118,27 @@ struct WorkDone {
   double load = 0.0;       // by the tractions, pressures and nodal forces (README "Loads")
 };
 
+// The system's clock and its run-wide sums: what the time loop and its
+// services read and set, the same for every dimension and shape function
+// (engine/simulation_base.hpp hands them out without the system's type).
+struct SystemScalars {
+  double t = 0.0, dt = 0.0;  // time at the start of the step, time step (s)
+  double max_speed_sq = 0.0;  // largest |v_p|^2 after the last step (m^2/s^2)
+  std::int64_t step = 0;
+  std::int64_t sorts = 0;  // particle sorts so far (the first at set-up)
+  double kinetic_energy = 0.0;  // after the last step (J)
+  WorkDone work;
+  // Power of the damping forces over the last step (W; per unit thickness
+  // in 2D, per unit cross-section in 1D): sum over the nodes of f_d . v,
+  // v the mean of the node's velocity before and after the update, so that
+  // it is exactly the damping's share of the grid's kinetic energy change
+  // (<= 0). damping_dissipated = -sum of damping_power dt over the steps (J).
+  double damping_power = 0.0;
+  double damping_dissipated = 0.0;
+};
+
 template <int D, class Shape>
-struct DiscreteSystem {
+struct DiscreteSystem : SystemScalars {
   // 3D, plane strain or plane stress (2D), uniaxial stress (1D).
   StressState stress_state =
       D == 3 ? StressState::three_d : D == 2 ? StressState::plane_strain : StressState::uniaxial_stress;
@@ -135,13 +154,6 @@ struct DiscreteSystem {
   Vec<D> gravity = Vec<D>::Zero();
   ExternalLoads<D> loads;          // tractions, pressures, nodal and body forces
   std::optional<Damping> damping;  // quasi-static damping, if the case has it
-  // Power of the damping forces over the last step (W; per unit thickness
-  // in 2D, per unit cross-section in 1D): sum over the nodes of f_d . v,
-  // v the mean of the node's velocity before and after the update, so that
-  // it is exactly the damping's share of the grid's kinetic energy change
-  // (<= 0). damping_dissipated = -sum of damping_power dt over the steps (J).
-  double damping_power = 0.0;
-  double damping_dissipated = 0.0;
   double flip_fraction = 1.0;
   // Nonlocal averages, only when a model asks for them
   // (discretisation/nonlocal_average.hpp, tasks/nonlocal_settle.hpp).
@@ -155,15 +167,9 @@ struct DiscreteSystem {
     std::int64_t unsettled_steps = 0;  // steps whose averages did not settle
   } nonlocal;
 
-  double t = 0.0, dt = 0.0;  // time at the start of the step, time step (s)
-  double max_speed_sq = 0.0;  // largest |v_p|^2 after the last step (m^2/s^2)
-  std::int64_t step = 0;
-  std::int64_t sorts = 0;  // particle sorts so far (the first at set-up)
   StepFlags flags;
 
   std::vector<BlockEnergy> block_energy;  // per block of `blocks`, this step's sums
-  double kinetic_energy = 0.0;            // after the last step (J)
-  WorkDone work;
 
   std::size_t particle_count() const {
     std::size_t n = 0;

@@ -26,7 +26,21 @@ struct ShapeList {
   static std::vector<std::string> names() { return {Shapes::name...}; }
 };
 
-using ShapeFunctions = ShapeList<LinearShape, GimpShape, QuadraticBSpline, CubicBSpline>;
+// The registry: X(Shape) for each shape function. The engine is compiled
+// for each (engine/simulation.hpp); ShapeFunctions lists the same types.
+#define FLOWMPM_SHAPE_FUNCTIONS(X) X(LinearShape) X(GimpShape) X(QuadraticBSpline) X(CubicBSpline)
+
+namespace detail {
+template <class List>
+struct without_first;
+template <class First, class... Rest>
+struct without_first<ShapeList<First, Rest...>> {
+  using type = ShapeList<Rest...>;
+};
+#define FLOWMPM_SHAPE_TYPE(Shape) , Shape
+}  // namespace detail
+
+using ShapeFunctions = detail::without_first<ShapeList<void FLOWMPM_SHAPE_FUNCTIONS(FLOWMPM_SHAPE_TYPE)>>::type;
 
 inline std::vector<std::string> shape_function_names() { return ShapeFunctions::names(); }
 

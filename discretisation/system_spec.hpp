@@ -19,6 +19,19 @@
 
 namespace flowmpm {
 
+// How the particles' velocity is updated from the grid (README "How a step
+// runs"): FLIP adds the grid's velocity change, PIC takes the grid's
+// velocity, blend mixes them by flip_fraction.
+enum class VelocityUpdate { flip, pic, blend };
+inline const char* velocity_update_name(VelocityUpdate u) {
+  switch (u) {
+    case VelocityUpdate::flip: return "flip";
+    case VelocityUpdate::pic: return "pic";
+    case VelocityUpdate::blend: return "blend";
+  }
+  return "";
+}
+
 struct GridSpec {
   Vec3 origin{};
   Vec3 cell_size{1.0, 1.0, 1.0};
@@ -90,6 +103,7 @@ struct SystemSpec {
   int dimension = 3;
   bool plane_stress = false;              // 2D: plane stress instead of plane strain
   std::string shape_function = "linear";  // a name of shape_function_names()
+  VelocityUpdate velocity_update = VelocityUpdate::flip;
   double flip_fraction = 1.0;             // 1: FLIP, 0: PIC
   Vec3 gravity{};                         // m/s^2
   double dt = 0.0;                        // the first step's time step (s)

@@ -130,53 +130,59 @@ void read_analysis(TableReader t, Case& c) {
   const std::int64_t dimension = t.integer("dimension");
   t.require(dimension >= 1 && dimension <= 3, "dimension", "1, 2 or 3");
   s.dimension = static_cast<int>(dimension);
-  c.scheme = t.choice("scheme", scheme_names(), "usl");
+  c.scheme = &scheme_named(t.choice("scheme", scheme_names(), "usl"));
   s.shape_function = t.choice("shape_function", shape_function_names(), "linear");
   if (t.has("stress_state")) {
     t.require(s.dimension == 2, "stress_state", "no stress_state outside 2D (3D is full, 1D uniaxial stress)");
     s.plane_stress = t.choice("stress_state", {"plane_strain", "plane_stress"}) == "plane_stress";
   }
-  c.velocity_update = t.choice("velocity_update", {"flip", "pic", "blend"}, "flip");
-  if (c.velocity_update == "blend") {
+  const std::string update = t.choice("velocity_update", {"flip", "pic", "blend"}, "flip");
+  s.velocity_update = update == "blend" ? VelocityUpdate::blend
+                      : update == "pic" ? VelocityUpdate::pic
+                                        : VelocityUpdate::flip;
+  if (s.velocity_update == VelocityUpdate::blend) {
     s.flip_fraction = t.number("flip_fraction");
     t.require(s.flip_fraction >= 0.0 && s.flip_fraction <= 1.0, "flip_fraction",
               "a FLIP fraction in [0, 1]");
   } else {
-    s.flip_fraction = c.velocity_update == "flip" ? 1.0 : 0.0;
+    s.flip_fraction = s.velocity_update == VelocityUpdate::flip ? 1.0 : 0.0;
     if (t.has("flip_fraction")) t.fail("flip_fraction", "no flip_fraction unless velocity_update = \"blend\"");
   }
+  TimeControl& time = c.time_control;
   if (t.has("dt") && t.node("dt")->is_string()) {
     t.require(t.string("dt") == "auto", "dt", "a time step in s, or \"auto\"");
-    c.dt_auto = true;
-    // Without cfl: 0.8 of the stable limit, at most 0.5 (set with the bodies).
-    c.cfl = t.number_or("cfl", 0.5);
-    t.require(c.cfl > 0.0, "cfl", "a positive CFL number");
-    c.end_time = t.number("end_time");
-    t.require(c.end_time > 0.0, "end_time", "a positive end time in s");
+    time.automatic = true;
+    // Without cfl: 0.8 of the stable limit, at most 0.5 (engine/time_step.hpp).
+    if (t.has("cfl")) {
+      time.cfl = t.number("cfl");
+      t.require(*time.cfl > 0.0, "cfl", "a positive CFL number");
+    }
+    time.end_time = t.number("end_time");
+    t.require(time.end_time > 0.0, "end_time", "a positive end time in s");
     if (t.has("steps")) t.fail("steps", "no steps with dt = \"auto\" (give end_time)");
   } else {
-    c.dt = t.number("dt");
-    t.require(c.dt > 0.0, "dt", "a positive time step in s, or \"auto\"");
+    time.dt = t.number("dt");
+    t.require(time.dt > 0.0, "dt", "a positive time step in s, or \"auto\"");
     if (t.has("cfl")) t.fail("cfl", "no cfl unless dt = \"auto\"");
     if (t.has("steps") == t.has("end_time")) {
       t.fail_table("give exactly one of analysis.steps and analysis.end_time");
     }
     if (t.has("steps")) {
-      c.steps = t.integer("steps");
-      t.require(c.steps >= 1 && c.steps <= max_steps, "steps",
+      time.steps = t.integer("steps");
+      t.require(time.steps >= 1 && time.steps <= max_steps, "steps",
                 std::string("a positive number of steps, at most ") + max_steps_text);
     } else {
       const double end_time = t.number("end_time");
       t.require(end_time > 0.0, "end_time", "a positive end time in s");
-      t.require(end_time / c.dt <= static_cast<double>(max_steps), "end_time",
+      t.require(end_time / time.dt <= static_cast<double>(max_steps), "end_time",
                 "at most " + std::string(max_steps_text) + " steps of dt (end_time / dt = " +
-                    readable_text(end_time / c.dt) + ")");
-      const double steps = std::round(end_time / c.dt);
-      t.require(steps >= 1.0 && std::abs(steps * c.dt - end_time) <= 1e-9 * end_time, "end_time",
-                "a whole number of time steps (end_time / dt = " + readable_text(end_time / c.dt) + ")");
-      c.steps = static_cast<std::int64_t>(steps);
+                    readable_text(end_time / time.dt) + ")");
+      const double steps = std::round(end_time / time.dt);
+      t.require(steps >= 1.0 && std::abs(steps * time.dt - end_time) <= 1e-9 * end_time, "end_time",
+                "a whole number of time steps (end_time / dt = " + readable_text(end_time / time.dt) + ")");
+      time.steps = static_cast<std::int64_t>(steps);
     }
-    c.end_time = c.dt * static_cast<double>(c.steps);
+    time.end_time = time.dt * static_cast<double>(time.steps);
   }
   c.guard_speed_factor = t.number_or("guard_speed_factor", 10.0);
   t.require(c.guard_speed_factor > 1.0, "guard_speed_factor", "a factor > 1 on the fastest wave speed");
@@ -606,7 +612,7 @@ Case read_case(const std::filesystem::path& file, const std::vector<std::string>
   if (t.has("damping")) read_damping(t.table("damping"), c.system);
   if (t.has("reference")) {
     TableReader r = t.table("reference");
-    c.reference = Reference::read(r, {c.system, c.end_time});
+    c.reference = Reference::read(r, {c.system, c.time_control.end_time});
     r.reject_unknown_keys();
     c.system.keep_initial_positions = true;
   }
@@ -618,59 +624,32 @@ Case read_case(const std::filesystem::path& file, const std::vector<std::string>
   }
   t.reject_unknown_keys();
 
+  // The time step's owner checks the choice against the scene's limits
+  // (the wave limit and, with transport, the diffusion limit).
+  c.time_step = TimeStep(c.system, *c.scheme, c.time_control);
+  c.system.dt = c.time_step.first_dt();
   check_memory(c, t);
-
-  // The explicit step is stable only below a fraction of the time a P wave
-  // takes to cross the smallest cell, and, with transport, below the
-  // explicit diffusion limit (engine/stable_time_step.hpp).
-  const Scheme& scheme = scheme_named(c.scheme);
-  const TimeStepLimit limits = time_step_limit(c.system, scheme);
-  const StableStep& stable = limits.wave;
-  const std::string limit = readable_text(stable.factor) + " h/c = " + readable_text(stable.dt()) + " s for " +
-                            scheme.label + " with " + c.system.shape_function + " shape functions at " +
-                            readable_text(stable.particles_per_cell) + " particles per cell (h/c = " +
-                            readable_text(stable.crossing) +
-                            " s: smallest cell over the P-wave speed of material \"" + stable.material + "\")";
-  TableReader analysis = t.table("analysis");
-  if (c.dt_auto) {
-    if (!analysis.has("cfl")) c.cfl = std::min(0.5, 0.8 * stable.factor);
-    analysis.require(c.cfl <= stable.factor, "cfl", "a CFL number no larger than the stable limit " + limit);
-    c.dt = c.cfl * stable.crossing;  // the first step's, particles at rest
-    // The same fraction of the diffusion limit as of the wave limit.
-    if (limits.diffusion) c.dt = std::min(c.dt, c.cfl / stable.factor * limits.diffusion->dt);
-  }
-  c.system.dt = c.dt;
-  if (!limits.diffusion) {
-    if (c.dt > stable.dt()) analysis.fail("dt", "a time step no larger than the stable limit " + limit);
-  } else {
-    const DiffusionStep& diffusion = *limits.diffusion;
-    const std::string diffusion_limit = "the " + diffusion.field + " diffusion limit 1 / (2 kappa sum_d 1/h_d^2) = " +
-                                        readable_text(diffusion.dt) + " s (" + diffusion.field + " diffusivity " +
-                                        readable_text(diffusion.diffusivity) + " m^2/s of material \"" +
-                                        diffusion.material + "\")";
-    const std::string wave_limit = "the wave limit " + limit;
-    if (c.dt > limits.dt()) {
-      analysis.fail("dt", "a time step no larger than the stable limit " + readable_text(limits.dt()) + " s: " +
-                              (limits.diffusion_governs() ? diffusion_limit + " governs; " + wave_limit
-                                                          : wave_limit + " governs; " + diffusion_limit));
-    }
-  }
-  if (c.dt_auto && c.end_time / c.dt > static_cast<double>(max_steps)) {
-    analysis.fail("end_time", "at most " + std::string(max_steps_text) + " steps (end_time over the first dt, " +
-                                  readable_text(c.dt) + " s, is " + readable_text(c.end_time / c.dt) + ")");
-  }
+  if (const auto& problem = c.time_step.problem()) t.table("analysis").fail(problem->key, problem->expected);
   // The viscous damping's share of the update, v (1 - c dt), must not
   // reverse the velocity.
   if (c.system.damping) {
     for (const auto& [time, coefficient] : c.system.damping->viscous.points) {
-      if (coefficient * c.dt > 1.0) {
+      const double dt = c.time_step.first_dt();
+      if (coefficient * dt > 1.0) {
         TableReader damping = t.table("damping");
-        damping.fail("viscous", "a viscous damping coefficient c with c dt <= 1 (c <= " + readable_text(1.0 / c.dt) +
-                                    " 1/s at dt = " + readable_text(c.dt) + " s)");
+        damping.fail("viscous", "a viscous damping coefficient c with c dt <= 1 (c <= " + readable_text(1.0 / dt) +
+                                    " 1/s at dt = " + readable_text(dt) + " s)");
       }
     }
   }
   return c;
+}
+
+void set_time_control(Case& c, TimeControl control) {
+  if (!control.automatic) control.end_time = control.dt * static_cast<double>(control.steps);
+  c.time_control = control;
+  c.time_step = TimeStep(c.system, *c.scheme, control);
+  c.system.dt = c.time_step.first_dt();
 }
 
 }  // namespace flowmpm

@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "discretisation/system_spec.hpp"
+#include "engine/schemes.hpp"
+#include "engine/time_step.hpp"
 #include "verification/reference.hpp"
 
 namespace flowmpm {
@@ -27,14 +29,12 @@ struct Case {
   // Of the file's text and the overrides (io/digest.hpp): a checkpoint
   // continues only the case that wrote it.
   std::string digest;
-  SystemSpec system;                      // what the discrete system is built from
-  std::string scheme = "usl";             // a name of scheme_names()
-  std::string velocity_update = "flip";   // "flip", "pic" or "blend" (system.flip_fraction)
-  double dt = 0.0;             // s; with dt_auto, the first step's
-  bool dt_auto = false;        // dt = cfl h_min / (c_max + |v|_max), every step
-  double cfl = 0.5;            // with dt_auto
-  std::int64_t steps = 0;      // 0 with dt_auto: run until end_time
-  double end_time = 0.0;       // s
+  SystemSpec system;             // what the discrete system is built from
+  const Scheme* scheme = nullptr;  // one of schemes()
+  // The time step's choice as read (analysis.dt, cfl, steps, end_time) and
+  // its owner, which checked it against the scene's limits.
+  TimeControl time_control;
+  TimeStep time_step;
   // Blow-up guard: a kinetic energy above guard_energy_factor times the
   // initial energy plus the work done on the bodies (checked every step), a
   // particle faster than guard_speed_factor times the fastest wave speed, or
@@ -46,6 +46,12 @@ struct Case {
   OutputSpec output;
   std::optional<Reference> reference;
 };
+
+// Sets a case's time step past the reader (the tests' cases beyond the
+// limit): its owner is rebuilt for `control` (a fixed step's end_time
+// follows from its steps) and the first step's dt set; its problem() is not
+// checked.
+void set_time_control(Case& c, TimeControl control);
 
 // Reads and validates a case. `overrides` are "dotted.key=VALUE" strings
 // (VALUE in TOML syntax) applied before validation, as from --set.

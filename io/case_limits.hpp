@@ -1,16 +1,12 @@
 // Limits on what a case may ask for beyond each key's own range (README
-// "Case files"): how many steps, and which names and paths are accepted.
+// "Case files"): which names and paths are accepted. How many steps a run
+// may take is the time step's (engine/time_step.hpp: max_steps).
 #pragma once
-#include <cstdint>
 #include <string_view>
 
-namespace flowmpm {
+#include "engine/time_step.hpp"
 
-// Steps a run may take: a count that cannot overflow (the step is a 64-bit
-// integer, times are step * dt) and that a run can finish (at 1 us per step,
-// about three hours).
-constexpr std::int64_t max_steps = 10'000'000'000;
-constexpr const char* max_steps_text = "10^10";
+namespace flowmpm {
 
 // A name that is one path component: not empty, not "." or "..", no "/" or
 // "\", no control character (a case's name is its default output directory

@@ -79,7 +79,7 @@ MemoryEstimate estimate_memory(const Case& c) {
     e.body_particles.push_back(particles_of(b, s.dimension));
     e.particles += e.body_particles.back();
   }
-  e.steps = c.dt_auto ? std::ceil(c.end_time / c.dt) : static_cast<double>(c.steps);
+  e.steps = static_cast<double>(c.time_step.planned_steps());
 
   std::vector<Material> materials;
   std::size_t largest_state = 0;

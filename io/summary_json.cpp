@@ -24,6 +24,16 @@ std::string voigt(const std::array<double, 6>& values) {
 
 }  // namespace
 
+std::string status_text(const RunSummary& s) {
+  switch (s.status) {
+    case RunStatus::running: return "running";
+    case RunStatus::completed: return "completed";
+    case RunStatus::interrupted: return "interrupted at step " + std::to_string(s.steps);
+    case RunStatus::failed: return "failed: " + s.failure;
+  }
+  return "unknown";
+}
+
 std::string summary_json(const RunSummary& s) {
   std::string out = "{\n";
   const auto field = [&out](const char* key, const std::string& value) {
@@ -31,7 +41,7 @@ std::string summary_json(const RunSummary& s) {
   };
   field("case", quoted_string(s.case_name));
   field("case_file", quoted_string(s.case_file));
-  field("status", quoted_string(s.status));
+  field("status", quoted_string(status_text(s)));
   field("scheme", quoted_string(s.scheme));
   field("shape_function", quoted_string(s.shape_function));
   field("velocity_update", quoted_string(s.velocity_update));

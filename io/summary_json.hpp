@@ -18,9 +18,14 @@ struct BodySummary {
   std::array<double, 6> mean_strain{};
 };
 
+// Where a run stands; summary.json writes it as "running", "completed",
+// "interrupted at step N" or "failed: <message>".
+enum class RunStatus { running, completed, interrupted, failed };
+
 struct RunSummary {
   std::string case_name, case_file, scheme, shape_function, velocity_update;
-  std::string status = "completed";  // or "failed: <message>"
+  RunStatus status = RunStatus::completed;
+  std::string failure;  // with failed: the message
   int dimension = 3;
   int threads = 1;
   std::size_t particles = 0, nodes = 0;
@@ -47,6 +52,9 @@ struct RunSummary {
   // (README "Verification"), by name; empty without one.
   std::map<std::string, double> measures;
 };
+
+// summary.json's "status".
+std::string status_text(const RunSummary& summary);
 
 // The JSON text (pretty-printed, numbers with 17 significant digits,
 // non-finite numbers written as null).

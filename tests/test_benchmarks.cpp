@@ -16,7 +16,7 @@ namespace {
 
 RunSummary run_benchmark(const std::string& name, const std::vector<std::string>& overrides = {}) {
   const RunSummary s = testing::run(read_case(testing::config("benchmarks/" + name + ".toml"), overrides));
-  REQUIRE(s.status == "completed");
+  REQUIRE(s.status == RunStatus::completed);
   return s;
 }
 

@@ -45,7 +45,7 @@ TEST_CASE("a cantilever under gravity: Euler-Bernoulli tip deflection and first 
   };
   const double period = 0.19576, static_tip = -14.715e-3;
   const int sample_every = 10;
-  const auto steps = static_cast<std::int64_t>(std::llround(2.0 * period / c.dt));
+  const auto steps = static_cast<std::int64_t>(std::llround(2.0 * period / c.time_step.first_dt()));
   std::vector<double> t, w;
   for (std::int64_t s = 0; s < steps; ++s) {
     sim.advance();

@@ -48,7 +48,7 @@ ParticleSnapshot run(const Case& c, int threads, bool serial, std::int64_t* sort
                      std::vector<std::string> fields = default_output_fields()) {
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
   auto sim = testing::simulation<D, Shape>(c);
-  for (std::int64_t s = 0; s < c.steps; ++s) serial ? sim.advance_serial() : sim.advance();
+  for (std::int64_t s = 0; s < c.time_control.steps; ++s) serial ? sim.advance_serial() : sim.advance();
   if (sorts) *sorts = sim.system().sorts;
   return sim.snapshot(fields);
 }
@@ -172,8 +172,8 @@ template <int D, class Shape>
 ParticleSnapshot run_transport(const Case& c, int threads, bool serial, TransportBranch branch,
                                std::int64_t* sorts = nullptr) {
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
-  Simulation<D, Shape> sim(c.system, scheme_named(c.scheme).wiring, c.dt, {}, branch);
-  for (std::int64_t s = 0; s < c.steps; ++s) serial ? sim.advance_serial() : sim.advance();
+  Simulation<D, Shape> sim(c.system, c.scheme->wiring, c.time_step.fixed_dt(), {}, branch);
+  for (std::int64_t s = 0; s < c.time_control.steps; ++s) serial ? sim.advance_serial() : sim.advance();
   if (sorts) *sorts = sim.system().sorts;
   return sim.snapshot(c.output.fields);
 }

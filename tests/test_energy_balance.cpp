@@ -86,10 +86,8 @@ TEST_CASE("the energy guard stops a run past the stable time step, naming where 
   // and the guard stops it once its kinetic energy passes twice the
   // initial energy, long before a particle would jump a cell.
   Case c = read_case(testing::config("verification/bar_vibration_small.toml"), {"analysis.shape_function=linear"});
-  const StableStep stable = stable_time_step(c.system, scheme_named(c.scheme));
-  c.dt = 1.3 * 0.756 * stable.crossing;
-  c.system.dt = c.dt;
-  c.steps = 2000;
+  const StableStep stable = stable_time_step(c.system, *c.scheme);
+  set_time_control(c, {.dt = 1.3 * 0.756 * stable.crossing, .steps = 2000});
   std::string message;
   try {
     testing::run(c);

@@ -36,7 +36,7 @@ inline RunSummary run(const Case& c, bool write = false) {
 // The simulation of a case, as run_case builds it, to step by hand.
 template <int D, class Shape>
 Simulation<D, Shape> simulation(const Case& c, std::function<void(Stage)> observer = {}) {
-  return Simulation<D, Shape>(c.system, scheme_named(c.scheme).wiring, c.dt_auto ? 0.0 : c.dt, std::move(observer));
+  return Simulation<D, Shape>(c.system, c.scheme->wiring, c.time_step.fixed_dt(), std::move(observer));
 }
 
 }  // namespace flowmpm::testing

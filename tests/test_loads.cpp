@@ -39,7 +39,7 @@ const std::string traction_load =
 // Runs every step of the case.
 template <class Shape>
 void run_steps(Simulation<2, Shape>& sim, const Case& c) {
-  for (std::int64_t s = 0; s < c.steps; ++s) sim.advance();
+  for (std::int64_t s = 0; s < c.time_control.steps; ++s) sim.advance();
 }
 
 // The largest |sigma_xx - t| and |sigma_yy| over the particles, over t.
@@ -215,7 +215,7 @@ TEST_CASE("local damping switched off in time: energy removed while on, kept aft
   };
   const double e0 = energy();
   double e_off = 0.0, worst_balance = 0.0;
-  for (std::int64_t s = 1; s <= c.steps; ++s) {
+  for (std::int64_t s = 1; s <= c.time_control.steps; ++s) {
     sim.advance();
     // The energy balance counts the damping's share as dissipated.
     const Diagnostics d = sim.diagnostics(1);

@@ -400,7 +400,7 @@ namespace {
 template <int D>
 BodyMeans run(const Case& c) {
   auto sim = testing::simulation<D, LinearShape>(c);
-  for (std::int64_t s = 0; s < c.steps; ++s) sim.advance();
+  for (std::int64_t s = 0; s < c.time_control.steps; ++s) sim.advance();
   return sim.diagnostics(c.system.bodies.size()).bodies[0];
 }
 

@@ -33,11 +33,11 @@ double mean_base_reaction(const std::string& shape) {
   const auto base = std::ranges::find_if(constraints, [](const NodeConstraint& k) { return k.name == "base" && k.axis == 1; });
   REQUIRE(base != constraints.end());
   double sum = 0.0;
-  for (std::int64_t s = 0; s < c.steps; ++s) {
+  for (std::int64_t s = 0; s < c.time_control.steps; ++s) {
     sim.advance();
     sum += base->reaction;
   }
-  return sum / static_cast<double>(c.steps);
+  return sum / static_cast<double>(c.time_control.steps);
 }
 
 }  // namespace
@@ -56,7 +56,7 @@ TEST_CASE("the loaded top of the uniaxial block reacts with the block's stress t
   const auto top = std::ranges::find_if(system.constraints, [](const NodeConstraint& k) { return k.name == "top"; });
   REQUIRE(top != system.constraints.end());
   const double h = system.grid.h[1];
-  for (std::int64_t s = 0; s < c.steps; ++s) {
+  for (std::int64_t s = 0; s < c.time_control.steps; ++s) {
     double force = 0.0;  // sum_p V_p sigma_yy,p / h at the start of the step
     for (const auto& b : system.batches)
       for (std::size_t p = 0; p < b.size(); ++p) force += b.volume[p] * b.stress[p][1] / h;

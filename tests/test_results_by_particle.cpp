@@ -46,7 +46,7 @@ TEST_CASE("a translating block, re-sorted many times: every row's displacement i
   const Case c = testing::case_from_text("translate",
                                          block_case("min = [0.2, 1.2]\nmax = [0.6, 1.6]\nvelocity = [5.0, -2.5]\n", "", "usl"));
   auto sim = testing::simulation<2, LinearShape>(c);
-  for (std::int64_t s = 0; s < c.steps; ++s) sim.advance();
+  for (std::int64_t s = 0; s < c.time_control.steps; ++s) sim.advance();
   // 0.04 s at 5 m/s: 0.2 m, 4 cells: re-sorted twice on the way (blocks of
   // 5 cells; a sort when a particle drifts 2 cells out of its block).
   CHECK(sim.system().sorts >= 3);
@@ -77,7 +77,7 @@ TEST_CASE("a rotating square: every row stays its particle and turns with the bo
   for (auto& b : sim.system().batches)
     for (std::size_t p = 0; p < b.size(); ++p) b.v[p] = omega * Vec<2>(-(b.x[p][1] - 1.0), b.x[p][0] - 1.0);
   const ParticleSnapshot start = sim.snapshot(c.output.fields);
-  for (std::int64_t s = 0; s < c.steps; ++s) sim.advance();
+  for (std::int64_t s = 0; s < c.time_control.steps; ++s) sim.advance();
   CHECK(sim.system().sorts > 1);
   const ParticleSnapshot end = sim.snapshot(c.output.fields);
   const auto& x_start = field(start, "position").real;
@@ -123,7 +123,7 @@ TEST_CASE("derived fields and a model's state variable, row by row") {
   CHECK(std::ranges::find(c.output.fields, "position") != c.output.fields.end());  // added for the XDMF
   CHECK_FALSE(c.system.keep_initial_positions);  // no displacement asked for: no x0 stored
   auto sim = testing::simulation<1, LinearShape>(c);
-  for (std::int64_t s = 0; s < c.steps; ++s) sim.advance();
+  for (std::int64_t s = 0; s < c.time_control.steps; ++s) sim.advance();
   const ParticleSnapshot snap = sim.snapshot(c.output.fields);
   const auto& stress = field(snap, "stress").real;
   const auto& q = field(snap, "von_mises").real;

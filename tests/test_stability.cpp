@@ -20,9 +20,7 @@ namespace {
 // The case at the largest accepted dt, for 2000 steps.
 RunSummary run_at_limit(const std::string& config, const std::string& scheme, const std::string& shape) {
   Case c = read_case(testing::config(config), {"analysis.scheme=" + scheme, "analysis.shape_function=" + shape});
-  c.dt = stable_time_step(c.system, scheme_named(c.scheme)).dt();
-  c.system.dt = c.dt;
-  c.steps = 2000;
+  set_time_control(c, {.dt = stable_time_step(c.system, *c.scheme).dt(), .steps = 2000});
   return testing::run(c);
 }
 

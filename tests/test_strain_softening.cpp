@@ -266,7 +266,7 @@ struct BarResult {
 template <class Shape = LinearShape>
 BarResult run_bar(const Case& c) {
   auto sim = testing::simulation<2, Shape>(c);
-  for (std::int64_t s = 0; s < c.steps; ++s) sim.advance();
+  for (std::int64_t s = 0; s < c.time_control.steps; ++s) sim.advance();
   const auto& model = sim.system();
   BarResult r;
   r.h = model.grid.h[1];

@@ -112,9 +112,9 @@ TEST_CASE("the explicit diffusion limit: a bound, a third of what the particle s
   const std::optional<DiffusionStep> limit = diffusion_time_step(c.system);
   REQUIRE(limit);
   CHECK(limit->dt == doctest::Approx(0.00625 * 0.00625 / (2.0 * 1e-3)).epsilon(1e-12));
-  CHECK(limit->dt < stable_time_step(c.system, scheme_named(c.scheme)).dt());
+  CHECK(limit->dt < stable_time_step(c.system, *c.scheme).dt());
   auto largest_after = [&](double fraction) {
-    c.dt = c.system.dt = fraction * limit->dt;
+    set_time_control(c, {.dt = fraction * limit->dt, .steps = c.time_control.steps});
     auto sim = testing::simulation<1, LinearShape>(c);
     for (int s = 0; s < 300; ++s) sim.advance();
     double largest = 0.0;
@@ -141,7 +141,7 @@ TEST_CASE("the explicit diffusion limit: a bound, a third of what the particle s
                  "analysis.dt: expected a time step no larger than the stable limit 0.0097833 s: the wave limit "
                  "0.495 h/c"));
   const Case automatic = read_case(testing::config("verification/slab_conduction.toml"), {"analysis.dt=\"auto\""});
-  CHECK(automatic.dt == doctest::Approx(0.8 * limit->dt).epsilon(1e-12));
+  CHECK(automatic.time_step.first_dt() == doctest::Approx(0.8 * limit->dt).epsilon(1e-12));
 }
 
 TEST_CASE("anisotropic conduction: axes turned 30 degrees conduct k_x cos^2 + k_y sin^2 along x") {
@@ -151,7 +151,7 @@ TEST_CASE("anisotropic conduction: axes turned 30 degrees conduct k_x cos^2 + k_
   // particles are off by 5 to 15 times more.
   const Case c = read_case(testing::config("verification/anisotropic_conduction_2d.toml"));
   auto sim = testing::simulation<2, LinearShape>(c);
-  for (std::int64_t s = 0; s < c.steps; ++s) sim.advance();
+  for (std::int64_t s = 0; s < c.time_control.steps; ++s) sim.advance();
   const double t = sim.system().t;
   auto rms_against = [&](double k) {
     SlabSeries exact{0.1, k / 1e6, 300.0, TimeFunction{{{0.0, 400.0}}}};
@@ -288,7 +288,7 @@ solvent_flux = [[0.0, 0.0], [0.1, 0.05]]
     return std::pair{heat, solvent};
   };
   const auto [heat0, solvent0] = totals();
-  for (std::int64_t s = 0; s < c.steps; ++s) sim.advance();
+  for (std::int64_t s = 0; s < c.time_control.steps; ++s) sim.advance();
   const auto [heat1, solvent1] = totals();
   // The flux at the start of each step (explicit): the ramp's steps sum
   // to 0.05 * 0.5 * (0.1 - 0.001) over its 100 steps, then 0.05 for 100 more.

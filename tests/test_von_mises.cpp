@@ -268,7 +268,7 @@ TEST_CASE("whole case: a bar pulled in uniaxial stress yields at sigma_0 and har
   const Case c = read_case(testing::config("materials/von_mises_bar.toml"));
   auto sim = testing::simulation<1, LinearShape>(c);
   double yield_strain = -1.0, yield_stress = 0.0;
-  for (std::int64_t s = 0; s < c.steps; ++s) {
+  for (std::int64_t s = 0; s < c.time_control.steps; ++s) {
     sim.advance();
     if (yield_strain >= 0.0) continue;
     const auto& states = std::get<StateArray<VonMises>>(sim.system().batches[0].states);
@@ -302,7 +302,7 @@ TEST_CASE("whole case: a plate pulled in plane stress yields at sigma_0, in plan
                              {"analysis.stress_state=\"" + state + "\""});
     auto sim = testing::simulation<2, LinearShape>(c);
     double yield_stress = -1.0;
-    for (std::int64_t s = 0; s < c.steps; ++s) {
+    for (std::int64_t s = 0; s < c.time_control.steps; ++s) {
       sim.advance();
       if (yield_stress >= 0.0) continue;
       for (const auto& st : std::get<StateArray<VonMises>>(sim.system().batches[0].states)) {

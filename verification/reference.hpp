@@ -13,6 +13,7 @@
 #include <variant>
 
 #include "core/registry.hpp"
+#include "engine/simulation_base.hpp"
 #include "verification/axial_vibration.hpp"
 #include "verification/cantilever.hpp"
 #include "verification/column_self_weight.hpp"
@@ -58,6 +59,10 @@ class Reference {
   void sample(const DiscreteSystem<D, Shape>& system) {
     std::visit([&](auto& s) { s.sample(system); }, solution_);
   }
+  // The same on a simulation of any dimension and shape function
+  // (compiled once, in verification/reference.cpp).
+  void initialise(SimulationBase& simulation) const;
+  void sample(const SimulationBase& simulation);
   std::map<std::string, double> errors() const {
     return std::visit([](const auto& s) { return s.errors(); }, solution_);
   }

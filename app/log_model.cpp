@@ -1,0 +1,119 @@
+#include <string>
+
+#include <spdlog/spdlog.h>
+
+#include "app/run_case_internal.hpp"
+#include "discretisation/shape_functions.hpp"
+#include "engine/simulation.hpp"
+#include "io/memory_estimate.hpp"
+
+namespace flowmpm::run_internal {
+
+namespace {
+
+// The particle fields a system stores.
+std::string stored_fields(int dimension, bool heat, bool solvent) {
+  const std::string vec = dimension == 1 ? "scalar" : std::to_string(dimension) + "-vector";
+  return "x, v (" + vec + "), mass, volume, stress, strain (6 Voigt)" +
+         std::string(heat ? ", temperature and its step" : "") +
+         std::string(solvent ? ", concentration and its step" : "");
+}
+
+// With transport: both time-step limits and which one governs.
+std::string time_step_limits(const TimeStepLimit& limits) {
+  const DiffusionStep& diffusion = *limits.diffusion;
+  return fmt::format("wave limit {:.4g} s (material '{}'), {} diffusion limit {:.4g} s (material '{}', diffusivity "
+                     "{:.4g} m^2/s): the {} limit governs",
+                     limits.wave.dt(), limits.wave.material, diffusion.field, diffusion.dt, diffusion.material,
+                     diffusion.diffusivity, limits.diffusion_governs() ? "diffusion" : "wave");
+}
+
+template <int D, class Shape>
+void log_system(spdlog::logger& log, const Case& c, const Simulation<D, Shape>& sim) {
+  const Scheme& scheme = *c.scheme;
+  const DiscreteSystem<D, Shape>& system = sim.system();
+  log.info("model: {}D ({}), scheme {} [{}], shape function {}, velocity update {}{}", D,
+           stress_state_name(system.stress_state), scheme.label, sim.graph().wiring().describe(), Shape::name,
+           velocity_update_name(c.system.velocity_update),
+           c.system.velocity_update == VelocityUpdate::blend
+               ? " (FLIP fraction " + std::to_string(system.flip_fraction) + ")"
+               : "");
+  std::string cells;
+  for (int d = 0; d < D; ++d) cells += (d ? " x " : "") + std::to_string(system.grid.cells[d]);
+  log.info("grid: {} cells, {} nodes, {} blocks of {}^{} cells ({} occupied)", cells,
+               system.grid.node_count(), system.blocks.block_count, BlockLayout<D, Shape>::block_cells, D,
+               system.blocks.occupied.size());
+  for (const auto& b : system.batches) {
+    const auto& m = c.system.materials[b.material];
+    log.info("body '{}': {} particles, material '{}' ({}, density {} kg/m^3, wave speed {:.4g} m/s)",
+                 c.system.bodies[b.body].name, b.size(), m.name, type_name(m.model), density(m.model),
+                 wave_speed(m.model));
+  }
+  log.info("particle fields stored: {}", stored_fields(D, system.heat.carried, system.solvent.carried));
+  if (system.nonlocal.active) {
+    log.info("nonlocal averages: over the initial positions (x0 stored), settled with the step's end by "
+             "nonlocal_settle");
+  }
+  for (const auto& k : system.constraints) {
+    log.info("node set '{}': {} nodes, velocity prescribed along {}", k.name, k.nodes.size(),
+                 "xyz"[k.axis]);
+  }
+  if (system.heat.carried || system.solvent.carried) {
+    log.info("transport: {}{}{} on the grid, a branch of the step graph beside the momentum stages",
+             system.heat.carried ? "heat conduction" : "", system.heat.carried && system.solvent.carried ? " and " : "",
+             system.solvent.carried ? "solvent diffusion" : "");
+  }
+  for (const auto* field : {&system.heat, &system.solvent}) {
+    for (const auto& k : field->prescribed) {
+      log.info("node set '{}': {} nodes, {} prescribed", k.name, k.nodes.size(),
+               field == &system.heat ? "temperature" : "concentration");
+    }
+  }
+  for (const auto& f : system.surface_fluxes) {
+    log.info("surface flux '{}': {}{}", f.name, f.heat ? "heat" : "", f.solvent ? (f.heat ? " and solvent" : "solvent") : "");
+  }
+  if (system.gravity.norm() > 0.0) log.info("gravity: {} m/s^2", system.gravity.norm());
+  for (const auto& load : system.loads.surface) log.info("load: {}", load.description);
+  for (const auto& load : system.loads.nodal) log.info("load: {}", load.description);
+  for (const auto& load : system.loads.body) log.info("load: {}", load.description);
+  if (system.damping) {
+    log.info("damping: local alpha {}, viscous c {} 1/s (at t = 0; README \"Damping\")", system.damping->local(0.0),
+             system.damping->viscous(0.0));
+  }
+  for (const auto& body : c.system.bodies) {
+    if (body.initial_stress) {
+      log.info("body '{}': initial stress {}", body.name, InitialStresses::name_of(*body.initial_stress));
+    } else if (body.particles && !body.particles->stress.empty()) {
+      log.info("body '{}': initial stress per particle from {}", body.name, body.particles->source);
+    }
+  }
+  const MemoryEstimate estimate = estimate_memory(c);
+  log.info("{}", estimate_text(estimate));
+  if (estimate.steps > long_run_steps) {
+    log.warn("a long run: {:.3g} steps (more than {:.0e})", estimate.steps, long_run_steps);
+  }
+  const TimeStep& time = c.time_step;
+  const StableStep& stable = time.limits().wave;
+  if (time.automatic()) {
+    log.info("time: dt automatic, CFL {} of h/c = {:.4g} s (the stable limit is {:.3g} h/c for {} with {} at {:.3g} "
+             "particles per cell), to t = {:.6g} s",
+             time.cfl(), stable.crossing, stable.factor, scheme.label, Shape::name, stable.particles_per_cell,
+             time.end_time());
+  } else {
+    log.info("time: dt = {:.6g} s = {:.3g} h/c ({:.3g} of the stable limit {:.3g} h/c for {} with {} at {:.3g} "
+             "particles per cell), {} steps to t = {:.6g} s",
+             time.first_dt(), time.first_dt() / stable.crossing, time.first_dt() / stable.dt(), stable.factor,
+             scheme.label, Shape::name, stable.particles_per_cell, time.fixed_steps(), time.end_time());
+  }
+  if (time.limits().diffusion) log.info("time-step limits: {}", time_step_limits(time.limits()));
+}
+
+}  // namespace
+
+void log_model(spdlog::logger& log, const Case& c, const SimulationBase& sim) {
+  with_dimension_and_shape(sim.dimension(), sim.shape_function(), [&]<int D, class Shape>() {
+    log_system(log, c, dynamic_cast<const Simulation<D, Shape>&>(sim));
+  });
+}
+
+}  // namespace flowmpm::run_internal
