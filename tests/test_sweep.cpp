@@ -85,7 +85,7 @@ TEST_CASE("a sweep expands [vary] keys in file order, then each [[zip]], the las
   CHECK(s.cases[23].values == std::vector<std::string>{"pic", "musl", "0.001", "0.2", "5"});
   // Every case was read with its overrides applied.
   CHECK(s.cases[23].c.scheme->name == "musl");
-  CHECK(s.cases[23].c.system.velocity_update == VelocityUpdate::pic);
+  CHECK(s.cases[23].c.system.velocity_update == flowmpm::VelocityUpdate::pic);
   CHECK(s.cases[23].c.time_control.steps == 200);
   CHECK(s.cases[23].c.output.every == 5);
 }

@@ -33,7 +33,7 @@ namespace {
 
 std::map<std::string, double> errors_of(const std::string& config, std::vector<std::string> overrides) {
   const RunSummary s = testing::run(read_case(testing::config(config), overrides));
-  REQUIRE(s.status == "completed");
+  REQUIRE(s.status == RunStatus::completed);
   return s.errors;
 }
 
