@@ -64,12 +64,44 @@ std::string Wiring::describe() const {
   return text;
 }
 
+void Wiring::check_disjoint() const {
+  // reaches[i][j]: a path of edges leads from node i to node j.
+  const int n = static_cast<int>(nodes.size());
+  std::vector<std::vector<bool>> reaches(n, std::vector<bool>(n, false));
+  const std::vector<int> order = topological_order();
+  for (auto it = order.rbegin(); it != order.rend(); ++it) {
+    for (auto [from, to] : edges) {
+      if (from != *it) continue;
+      reaches[from][to] = true;
+      for (int k = 0; k < n; ++k)
+        if (reaches[to][k]) reaches[from][k] = true;
+    }
+  }
+  auto access = [&](int node) {
+    StageAccess a;
+    for (Stage s : nodes[node]) a.reads |= stage_access(s).reads, a.writes |= stage_access(s).writes;
+    return a;
+  };
+  for (int i = 0; i < n; ++i) {
+    for (int j = i + 1; j < n; ++j) {
+      if (reaches[i][j] || reaches[j][i]) continue;
+      const StageAccess a = access(i), b = access(j);
+      const unsigned clash = (a.writes & (b.reads | b.writes)) | (b.writes & a.reads);
+      if (clash == 0) continue;
+      throw std::logic_error("the step wiring lets \"" + group_name(nodes[i]) + "\" and \"" + group_name(nodes[j]) +
+                             "\" run at the same time, but one writes what the other reads or writes (" +
+                             data_names(clash) + "): wire a path between them");
+    }
+  }
+}
+
 StepGraph::StepGraph(Wiring wiring, NodeFunction run_node)
     : wiring_(std::move(wiring)),
       run_node_(std::move(run_node)),
       node_seconds_(wiring_.nodes.size(), 0.0),
       serial_order_(wiring_.topological_order()),
       start_(graph_) {
+  wiring_.check_disjoint();
   for (int node = 0; node < static_cast<int>(wiring_.nodes.size()); ++node) {
     nodes_.push_back(std::make_unique<tbb::flow::continue_node<tbb::flow::continue_msg>>(
         graph_, [this, node](const tbb::flow::continue_msg&) {

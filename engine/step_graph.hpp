@@ -32,6 +32,10 @@ struct Wiring {
   // a branch that runs beside follows " || " and ends with the node it
   // joins before: "... || transport_p2g -> ... -> transport_g2p -> g2p_motion & g2p_stress".
   std::string describe() const;
+  // Throws std::logic_error naming both nodes when two nodes without a path
+  // between them (which the graph may run at the same time) write data the
+  // other reads or writes (tasks/stage.hpp stage_access).
+  void check_disjoint() const;
 };
 
 class StepGraph {
@@ -39,7 +43,7 @@ class StepGraph {
   // Runs the work of node `node` of the wiring.
   using NodeFunction = std::function<void(int node)>;
 
-  // Builds the graph once.
+  // Builds the graph once, after wiring.check_disjoint().
   StepGraph(Wiring wiring, NodeFunction run_node);
 
   // Runs one step through the graph and waits for it.
