@@ -111,7 +111,7 @@ void log_system(spdlog::logger& log, const Case& c, const Simulation<D, Shape>& 
 }  // namespace
 
 void log_model(spdlog::logger& log, const Case& c, const SimulationBase& sim) {
-  with_dimension_and_shape(sim.dimension(), sim.shape_function(), [&]<int D, class Shape>() {
+  with_dimension_and_shape(sim.dimension(), sim.shape(), [&]<int D, class Shape>() {
     log_system(log, c, dynamic_cast<const Simulation<D, Shape>&>(sim));
   });
 }

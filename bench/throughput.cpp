@@ -62,7 +62,7 @@ SystemSpec block_case(std::size_t target_particles, const std::string& shape, co
   SystemSpec c;
   c.source = "bench_block";
   c.dimension = 3;
-  c.shape_function = shape;
+  c.shape_function = shape_function_named(shape);
   c.grid.origin = {-2 * h, -2 * h, -2 * h};
   c.grid.cell_size = {h, h, h};
   c.grid.cells = {k + 4, k + 5, k + 4};
@@ -193,7 +193,8 @@ ShapeRunner runner_named(const std::string& shape) {
     std::cerr << "--shape: expected one of " << quoted_list(known) << ", got '" << shape << "'\n";
     std::exit(1);
   }
-  return with_shape_function(shape, []<class Shape>() { return ShapeRunner{&time_steps<Shape>, &output_cost<Shape>}; });
+  return with_shape_function(shape_function_named(shape),
+                             []<class Shape>() { return ShapeRunner{&time_steps<Shape>, &output_cost<Shape>}; });
 }
 
 // The transport table: per size, the median rates (2 threads unless

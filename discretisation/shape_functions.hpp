@@ -44,22 +44,42 @@ using ShapeFunctions = detail::without_first<ShapeList<void FLOWMPM_SHAPE_FUNCTI
 
 inline std::vector<std::string> shape_function_names() { return ShapeFunctions::names(); }
 
+// A shape function chosen when the case is read: its place in
+// ShapeFunctions. Nothing after the reader looks a shape function up by name.
+struct ShapeChoice {
+  std::size_t index = 0;  // LinearShape
+  friend bool operator==(ShapeChoice, ShapeChoice) = default;
+};
+
 namespace detail {
 template <class F, class First, class... Rest>
-decltype(auto) with_shape_in(std::string_view name, F& f, ShapeList<First, Rest...>) {
-  if (name == First::name) return f.template operator()<First>();
+decltype(auto) with_shape_in(std::size_t index, F& f, ShapeList<First, Rest...>) {
+  if (index == 0) return f.template operator()<First>();
   if constexpr (sizeof...(Rest) > 0) {
-    return with_shape_in(name, f, ShapeList<Rest...>{});
+    return with_shape_in(index - 1, f, ShapeList<Rest...>{});
   } else {
-    throw std::invalid_argument("unknown shape function \"" + std::string(name) + "\"");
+    throw std::invalid_argument("no shape function " + std::to_string(index));
   }
 }
 }  // namespace detail
 
-// Calls f.template operator()<Shape>() for the shape function named `name`.
+// Calls f.template operator()<Shape>() for the chosen shape function.
 template <class F>
-decltype(auto) with_shape_function(std::string_view name, F&& f) {
-  return detail::with_shape_in(name, f, ShapeFunctions{});
+decltype(auto) with_shape_function(ShapeChoice shape, F&& f) {
+  return detail::with_shape_in(shape.index, f, ShapeFunctions{});
+}
+
+// The shape function called `name` (the case file's
+// analysis.shape_function); throws std::invalid_argument if none is.
+inline ShapeChoice shape_function_named(std::string_view name) {
+  const std::vector<std::string> names = shape_function_names();
+  for (std::size_t i = 0; i < names.size(); ++i)
+    if (names[i] == name) return {i};
+  throw std::invalid_argument("unknown shape function \"" + std::string(name) + "\"");
+}
+
+inline const char* shape_function_name(ShapeChoice shape) {
+  return with_shape_function(shape, []<class Shape>() { return Shape::name; });
 }
 
 // Calls f.template operator()<D>() for a dimension, 1, 2 or 3.
@@ -76,7 +96,7 @@ decltype(auto) with_dimension(int dimension, F&& f) {
 // Calls f.template operator()<D, Shape>() for a dimension (1, 2 or 3) and a
 // shape function: the one dispatch from run-time choices to compiled code.
 template <class F>
-decltype(auto) with_dimension_and_shape(int dimension, std::string_view shape, F&& f) {
+decltype(auto) with_dimension_and_shape(int dimension, ShapeChoice shape, F&& f) {
   return with_shape_function(shape, [&]<class Shape>() -> decltype(auto) {
     return with_dimension(dimension, [&]<int D>() -> decltype(auto) { return f.template operator()<D, Shape>(); });
   });

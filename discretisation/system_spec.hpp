@@ -15,6 +15,7 @@
 #include "discretisation/initial_stress.hpp"
 #include "discretisation/loads.hpp"
 #include "discretisation/particle_list.hpp"
+#include "discretisation/shape_functions.hpp"
 #include "materials/material.hpp"
 
 namespace flowmpm {
@@ -102,7 +103,7 @@ struct SystemSpec {
   std::string source;  // where it was read from (the case file), for messages
   int dimension = 3;
   bool plane_stress = false;              // 2D: plane stress instead of plane strain
-  std::string shape_function = "linear";  // a name of shape_function_names()
+  ShapeChoice shape_function;             // the shape function (discretisation/shape_functions.hpp)
   VelocityUpdate velocity_update = VelocityUpdate::flip;
   double flip_fraction = 1.0;             // 1: FLIP, 0: PIC
   Vec3 gravity{};                         // m/s^2

@@ -40,6 +40,7 @@ class Simulation final : public SimulationBase {
 
   // SimulationBase
   int dimension() const override { return D; }
+  ShapeChoice shape() const override { return shape_; }
   const char* shape_function() const override { return Shape::name; }
   StressState stress_state() const override { return system_.stress_state; }
   const Wiring& wiring() const override { return graph_.wiring(); }
@@ -64,6 +65,7 @@ class Simulation final : public SimulationBase {
   void finish_step(RunStep&& run_step);
 
   DiscreteSystem<D, Shape> system_;
+  ShapeChoice shape_;
   double fixed_dt_;
   std::function<void(Stage)> observer_;
   std::vector<void (*)(DiscreteSystem<D, Shape>&)> passes_;  // per node (tasks/stage_table.hpp)

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "discretisation/discrete_system.hpp"
+#include "discretisation/shape_functions.hpp"
 #include "discretisation/system_spec.hpp"
 #include "engine/diagnostics.hpp"
 #include "engine/schemes.hpp"
@@ -34,7 +35,8 @@ class SimulationBase {
   virtual ~SimulationBase() = default;
 
   virtual int dimension() const = 0;
-  virtual const char* shape_function() const = 0;
+  virtual ShapeChoice shape() const = 0;
+  virtual const char* shape_function() const = 0;  // its name
   virtual StressState stress_state() const = 0;
   // The wiring the graph runs (the scheme's, with what the scene adds).
   virtual const Wiring& wiring() const = 0;

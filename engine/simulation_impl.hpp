@@ -21,7 +21,8 @@ namespace flowmpm {
 template <int D, class Shape>
 Simulation<D, Shape>::Simulation(const SystemSpec& spec, const Wiring& wiring, double fixed_dt,
                                  std::function<void(Stage)> observer, TransportBranch branch)
-    : fixed_dt_(fixed_dt),
+    : shape_(spec.shape_function),
+      fixed_dt_(fixed_dt),
       observer_(std::move(observer)),
       graph_(step_wiring(asks_nonlocal(spec) ? with_nonlocal_settle(wiring) : wiring, spec, branch),
              [this](int node) { run_node(node); }) {

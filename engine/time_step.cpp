@@ -15,7 +15,7 @@ TimeStep::TimeStep(const SystemSpec& spec, const Scheme& scheme, const TimeContr
   for (int d = 0; d < spec.dimension; ++d) h_min_ = std::min(h_min_, spec.grid.cell_size[d]);
   c_max_ = h_min_ / stable.crossing;
   wave_limit_text_ = readable_text(stable.factor) + " h/c = " + readable_text(stable.dt()) + " s for " +
-                     scheme.label + " with " + spec.shape_function + " shape functions at " +
+                     scheme.label + " with " + shape_function_name(spec.shape_function) + " shape functions at " +
                      readable_text(stable.particles_per_cell) + " particles per cell (h/c = " +
                      readable_text(stable.crossing) + " s: smallest cell over the P-wave speed of material \"" +
                      stable.material + "\")";

@@ -131,7 +131,7 @@ void read_analysis(TableReader t, Case& c) {
   t.require(dimension >= 1 && dimension <= 3, "dimension", "1, 2 or 3");
   s.dimension = static_cast<int>(dimension);
   c.scheme = &scheme_named(t.choice("scheme", scheme_names(), "usl"));
-  s.shape_function = t.choice("shape_function", shape_function_names(), "linear");
+  s.shape_function = shape_function_named(t.choice("shape_function", shape_function_names(), "linear"));
   if (t.has("stress_state")) {
     t.require(s.dimension == 2, "stress_state", "no stress_state outside 2D (3D is full, 1D uniaxial stress)");
     s.plane_stress = t.choice("stress_state", {"plane_strain", "plane_stress"}) == "plane_stress";

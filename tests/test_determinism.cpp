@@ -189,7 +189,7 @@ TEST_CASE("transport beside the mechanics: 1 thread, 2 threads, serial and one a
     const Case c = testing::case_from_text("impact_transport", transport_case(),
                                            {std::string("analysis.shape_function=") + shape,
                                             std::string("analysis.scheme=") + scheme});
-    with_shape_function(shape, [&]<class Shape>() {
+    with_shape_function(c.system.shape_function, [&]<class Shape>() {
       std::int64_t sorts = 0;
       const ParticleSnapshot one = run_transport<2, Shape>(c, 1, false, TransportBranch::beside, &sorts);
       CHECK(sorts > 1);

@@ -9,7 +9,7 @@ namespace {
 // Calls f(system) with the typed system of `simulation`.
 template <class Simulation, class F>
 void with_system(Simulation& simulation, F&& f) {
-  with_dimension_and_shape(simulation.dimension(), simulation.shape_function(), [&]<int D, class Shape>() {
+  with_dimension_and_shape(simulation.dimension(), simulation.shape(), [&]<int D, class Shape>() {
     using Typed = std::conditional_t<std::is_const_v<Simulation>, const flowmpm::Simulation<D, Shape>,
                                      flowmpm::Simulation<D, Shape>>;
     f(dynamic_cast<Typed&>(simulation).system());
