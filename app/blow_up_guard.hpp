@@ -13,7 +13,7 @@
 #include "engine/energy_balance.hpp"
 #include "engine/simulation_base.hpp"
 #include "engine/time_step.hpp"
-#include "io/case_file.hpp"
+#include "io/case/case_file.hpp"
 
 namespace flowmpm {
 

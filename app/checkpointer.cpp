@@ -2,7 +2,7 @@
 
 #include "app/run_case_internal.hpp"
 #include "app/stopwatch.hpp"
-#include "io/checkpoint_file.hpp"
+#include "io/results/checkpoint_file.hpp"
 
 namespace flowmpm {
 

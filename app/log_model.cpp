@@ -3,9 +3,9 @@
 #include <spdlog/spdlog.h>
 
 #include "app/run_case_internal.hpp"
-#include "discretisation/shape_functions.hpp"
+#include "discretisation/shapes/shape_functions.hpp"
 #include "engine/simulation.hpp"
-#include "io/memory_estimate.hpp"
+#include "io/case/memory_estimate.hpp"
 
 namespace flowmpm::run_internal {
 

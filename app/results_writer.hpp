@@ -14,9 +14,9 @@
 #include "app/reference_sampler.hpp"
 #include "app/run_case.hpp"
 #include "engine/simulation_base.hpp"
-#include "io/results_h5.hpp"
-#include "io/results_index.hpp"
-#include "io/timeseries_csv.hpp"
+#include "io/results/results_h5.hpp"
+#include "io/results/results_index.hpp"
+#include "io/results/timeseries_csv.hpp"
 
 namespace flowmpm {
 

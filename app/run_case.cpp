@@ -16,7 +16,7 @@
 #include "app/run_services.hpp"
 #include "app/stopwatch.hpp"
 #include "core/errors.hpp"
-#include "io/output_lock.hpp"
+#include "io/results/output_lock.hpp"
 
 namespace flowmpm {
 
@@ -213,7 +213,7 @@ RunSummary run_case(const Case& c, const RunOptions& options) {
   // A restart that cannot be made says why before anything is touched.
   std::optional<StateRecords> asked;
   if (options.write_results && options.restart == Restart::from_checkpoint) asked = checkpoint_of(c);
-  // From here the output directory is this run's (io/output_lock.hpp), and
+  // From here the output directory is this run's (io/results/output_lock.hpp), and
   // an interrupt lets the run finish its step.
   const auto& dir = c.output.directory;
   std::optional<OutputLock> lock;

@@ -7,8 +7,8 @@
 #include <optional>
 #include <string>
 
-#include "io/case_file.hpp"
-#include "io/summary_json.hpp"
+#include "io/case/case_file.hpp"
+#include "io/results/summary_json.hpp"
 
 namespace flowmpm {
 

@@ -7,7 +7,7 @@
 
 #include "app/run_case_internal.hpp"
 #include "core/errors.hpp"
-#include "io/checkpoint_file.hpp"
+#include "io/results/checkpoint_file.hpp"
 
 #include "flowmpm_build_info.hpp"
 

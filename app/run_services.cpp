@@ -1,6 +1,6 @@
 #include "app/run_services.hpp"
 
-#include "discretisation/shape_functions.hpp"
+#include "discretisation/shapes/shape_functions.hpp"
 
 namespace flowmpm {
 

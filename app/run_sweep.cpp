@@ -9,7 +9,7 @@
 #include <spdlog/spdlog.h>
 #include <tbb/task_arena.h>
 
-#include "io/atomic_file.hpp"
+#include "io/results/atomic_file.hpp"
 
 namespace flowmpm {
 

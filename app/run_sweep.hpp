@@ -12,7 +12,7 @@
 #include <spdlog/spdlog.h>
 
 #include "app/sweep_table.hpp"
-#include "io/sweep_file.hpp"
+#include "io/case/sweep_file.hpp"
 
 namespace flowmpm {
 

@@ -5,8 +5,8 @@
 #include <sstream>
 
 #include "app/run_case.hpp"
-#include "io/atomic_file.hpp"
-#include "io/output_lock.hpp"
+#include "io/results/atomic_file.hpp"
+#include "io/results/output_lock.hpp"
 
 namespace flowmpm {
 namespace {

@@ -15,7 +15,7 @@
 
 #include <tbb/task_arena.h>
 
-#include "io/sweep_file.hpp"
+#include "io/case/sweep_file.hpp"
 
 namespace flowmpm {
 

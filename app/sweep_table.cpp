@@ -4,8 +4,8 @@
 #include <cmath>
 #include <set>
 
-#include "io/atomic_file.hpp"
-#include "io/csv_text.hpp"
+#include "io/results/atomic_file.hpp"
+#include "io/results/csv_text.hpp"
 
 namespace flowmpm {
 namespace {

@@ -21,9 +21,9 @@
 #include "app/run_sweep_mpi.hpp"
 #endif
 #include "core/errors.hpp"
-#include "io/memory_estimate.hpp"
-#include "io/output_lock.hpp"
-#include "io/sweep_file.hpp"
+#include "io/case/memory_estimate.hpp"
+#include "io/results/output_lock.hpp"
+#include "io/case/sweep_file.hpp"
 
 namespace {
 

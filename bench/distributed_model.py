@@ -20,13 +20,13 @@ RATE_PER_CORE = {"linear": 14.30e6, "bspline2": 6.01e6}
 # Bytes moved per particle-step (bench/README.md "What limits the step rate").
 BYTES_PER_PARTICLE_STEP = 420.0
 # Shape functions: nodes reached below and above a particle's cell, and the
-# block edge B (discretisation/shape_*.hpp, discretisation/blocks.hpp).
+# block edge B (discretisation/shape_*.hpp, discretisation/grid/blocks.hpp).
 REACH = {"linear": (0, 1), "bspline2": (1, 2)}
 BLOCK = {"linear": 5, "bspline2": 7}
 PARTICLES_PER_CELL = 8  # 2 per axis, as in bench_throughput
 # Halo bytes per shared node and hand-over (USL): the P2G sum travels as
 # mass, momentum, force (7 doubles); the grid update returns velocity and its
-# change (6 doubles). Grid<3> fields, discretisation/grid.hpp.
+# change (6 doubles). Grid<3> fields, discretisation/grid/grid.hpp.
 SUM_BYTES, RETURN_BYTES = 7 * 8, 6 * 8
 # Hand-overs of a shared node's running sum per P2G pass with today's colour
 # order (colour = px + 2 py + 4 pz): across a z face 1, across a y face 3.

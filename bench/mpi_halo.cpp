@@ -27,7 +27,7 @@
 #include <string>
 #include <vector>
 
-#include "discretisation/grid.hpp"
+#include "discretisation/grid/grid.hpp"
 
 using namespace flowmpm;
 using Clock = std::chrono::steady_clock;

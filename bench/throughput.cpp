@@ -42,11 +42,11 @@
 
 #include <tbb/global_control.h>
 
-#include "discretisation/shape_functions.hpp"
+#include "discretisation/shapes/shape_functions.hpp"
 #include "engine/stable_time_step.hpp"
 #include "engine/schemes.hpp"
 #include "engine/simulation.hpp"
-#include "io/results_h5.hpp"
+#include "io/results/results_h5.hpp"
 
 using namespace flowmpm;
 using Clock = std::chrono::steady_clock;

@@ -1,6 +1,6 @@
 // The table of parameters that a registered extension (a material model, a
 // reference solution, a body shape, a load) reads its own keys from. io
-// implements it on a TOML table of the case file (io/case_reader.hpp); an
+// implements it on a TOML table of the case file (io/case/case_reader.hpp); an
 // extension never sees the file format. Every failure throws CaseError with
 // a message naming the file, the line, the dotted key and what was expected.
 #pragma once

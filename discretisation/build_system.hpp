@@ -19,10 +19,10 @@
 #include <type_traits>
 
 #include "core/errors.hpp"
-#include "discretisation/body_overlap.hpp"
-#include "discretisation/nonlocal_average.hpp"
-#include "discretisation/particle_sort.hpp"
-#include "discretisation/surface_faces.hpp"
+#include "discretisation/bodies/body_overlap.hpp"
+#include "discretisation/nonlocal/nonlocal_average.hpp"
+#include "discretisation/grid/particle_sort.hpp"
+#include "discretisation/bodies/surface_faces.hpp"
 #include "discretisation/system_spec.hpp"
 
 namespace flowmpm {

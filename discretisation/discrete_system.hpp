@@ -11,11 +11,11 @@
 #include <vector>
 
 #include "core/time_function.hpp"
-#include "discretisation/blocks.hpp"
-#include "discretisation/external_loads.hpp"
-#include "discretisation/grid.hpp"
-#include "discretisation/nonlocal_bins.hpp"
-#include "discretisation/particles.hpp"
+#include "discretisation/grid/blocks.hpp"
+#include "discretisation/loads/external_loads.hpp"
+#include "discretisation/grid/grid.hpp"
+#include "discretisation/nonlocal/nonlocal_bins.hpp"
+#include "discretisation/grid/particles.hpp"
 #include "materials/material.hpp"
 #include "materials/stress_state.hpp"
 
@@ -156,7 +156,7 @@ struct DiscreteSystem : SystemScalars {
   std::optional<Damping> damping;  // quasi-static damping, if the case has it
   double flip_fraction = 1.0;
   // Nonlocal averages, only when a model asks for them
-  // (discretisation/nonlocal_average.hpp, tasks/nonlocal_settle.hpp).
+  // (discretisation/nonlocal/nonlocal_average.hpp, tasks/nonlocal_settle.hpp).
   struct Nonlocal {
     bool active = false;
     NonlocalBins<D> bins;

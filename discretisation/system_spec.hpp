@@ -10,12 +10,12 @@
 
 #include "core/time_function.hpp"
 #include "core/vec.hpp"
-#include "discretisation/body_shape.hpp"
-#include "discretisation/external_loads.hpp"
-#include "discretisation/initial_stress.hpp"
-#include "discretisation/loads.hpp"
-#include "discretisation/particle_list.hpp"
-#include "discretisation/shape_functions.hpp"
+#include "discretisation/bodies/body_shape.hpp"
+#include "discretisation/loads/external_loads.hpp"
+#include "discretisation/bodies/initial_stress.hpp"
+#include "discretisation/loads/loads.hpp"
+#include "discretisation/grid/particle_list.hpp"
+#include "discretisation/shapes/shape_functions.hpp"
 #include "materials/material.hpp"
 
 namespace flowmpm {
@@ -103,7 +103,7 @@ struct SystemSpec {
   std::string source;  // where it was read from (the case file), for messages
   int dimension = 3;
   bool plane_stress = false;              // 2D: plane stress instead of plane strain
-  ShapeChoice shape_function;             // the shape function (discretisation/shape_functions.hpp)
+  ShapeChoice shape_function;             // the shape function (discretisation/shapes/shape_functions.hpp)
   VelocityUpdate velocity_update = VelocityUpdate::flip;
   double flip_fraction = 1.0;             // 1: FLIP, 0: PIC
   Vec3 gravity{};                         // m/s^2

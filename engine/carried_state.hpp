@@ -12,7 +12,7 @@
 // reads. A node leaves the active box at a re-sort only when no particle
 // reached it in the step before (the box reaches drift_limit >= 2 cells
 // beyond the blocks, and a particle moves at most one cell per step:
-// discretisation/blocks.hpp), so what it keeps is zero mass, momentum and
+// discretisation/grid/blocks.hpp), so what it keeps is zero mass, momentum and
 // force, and on a massless node velocities, which count for nothing (the
 // reactions weigh them by its zero mass).
 #pragma once

@@ -1,6 +1,6 @@
 #include <memory>
 
-#include "discretisation/shape_functions.hpp"
+#include "discretisation/shapes/shape_functions.hpp"
 #include "engine/simulation.hpp"
 
 namespace flowmpm {

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "discretisation/discrete_system.hpp"
-#include "discretisation/shape_functions.hpp"
+#include "discretisation/shapes/shape_functions.hpp"
 #include "discretisation/system_spec.hpp"
 #include "engine/schemes.hpp"
 #include "engine/simulation_base.hpp"

@@ -8,7 +8,7 @@
 
 #include "core/errors.hpp"
 #include "discretisation/build_system.hpp"
-#include "discretisation/particle_sort.hpp"
+#include "discretisation/grid/particle_sort.hpp"
 #include "engine/carried_state.hpp"
 #include "engine/diagnostics.hpp"
 #include "engine/energy_balance.hpp"

@@ -13,7 +13,7 @@
 #include <optional>
 #include <string>
 
-#include "discretisation/shape_functions.hpp"
+#include "discretisation/shapes/shape_functions.hpp"
 #include "discretisation/system_spec.hpp"
 #include "engine/schemes.hpp"
 

@@ -32,7 +32,7 @@ struct MaterialInput {
   // the weighted average of its neighbours' sources at the end of this step,
   // sum_{q != p} alpha_pq V_q s_q / sum_q alpha_pq V_q, and the particle's
   // own weight in it, V_p / sum_q alpha_pq V_q
-  // (discretisation/nonlocal_average.hpp). Both 0 where no engine computes
+  // (discretisation/nonlocal/nonlocal_average.hpp). Both 0 where no engine computes
   // them (a material point driven alone).
   double nonlocal_others = 0.0;
   double nonlocal_self_weight = 0.0;

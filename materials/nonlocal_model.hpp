@@ -6,7 +6,7 @@
 //                                                // ended in this state used it
 // and then its update gets, in MaterialInput, the Gaussian average over a
 // few l of its neighbours' sources at the end of the same step, and its own
-// weight in that average (discretisation/nonlocal_average.hpp). The engine
+// weight in that average (discretisation/nonlocal/nonlocal_average.hpp). The engine
 // may run the update more than once per step, from the same start, until
 // the average settles (tasks/nonlocal_settle.hpp). A scene whose models ask
 // for no average stores nothing and wires no stage for it.

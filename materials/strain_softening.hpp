@@ -32,7 +32,7 @@
 //    velocity gradient), e.g. at a notch.
 //  - nonlocal (nonlocal_length l): w = L e_bar, e_bar the average of e over
 //    the neighbours with the weight alpha = exp(-r^2 / (2 l^2)) cut at 4 l
-//    ([Pijaudier-Cabot 1987]; discretisation/nonlocal_average.hpp), L =
+//    ([Pijaudier-Cabot 1987]; discretisation/nonlocal/nonlocal_average.hpp), L =
 //    sqrt(2 pi) l erf(2 sqrt 2) the weight's integral across a plane. The
 //    Gaussian is the product of its 1D factors, so across a planar band
 //    narrower than l that spans the window, L e_bar is the band's whole

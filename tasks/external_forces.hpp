@@ -17,7 +17,7 @@
 // node's mean velocity over the update times dt (add_nodal_load_work).
 #pragma once
 #include "discretisation/discrete_system.hpp"
-#include "discretisation/stencil.hpp"
+#include "discretisation/grid/stencil.hpp"
 
 namespace flowmpm {
 

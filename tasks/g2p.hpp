@@ -17,7 +17,7 @@
 #include <atomic>
 #include <cmath>
 
-#include "discretisation/stencil.hpp"
+#include "discretisation/grid/stencil.hpp"
 #include "tasks/parallel_blocks.hpp"
 
 namespace flowmpm {

@@ -1,5 +1,5 @@
 // nonlocal_settle: the step's nonlocal averages made consistent with its end
-// (discretisation/nonlocal_average.hpp), wired after g2p_stress only in a
+// (discretisation/nonlocal/nonlocal_average.hpp), wired after g2p_stress only in a
 // scene whose models ask for averages. g2p_stress updated each such particle
 // with the average at the end of the last step and kept its start of step
 // (tasks/g2p.hpp). Here the average of the new sources is taken; every
@@ -18,7 +18,7 @@
 #include <cmath>
 #include <vector>
 
-#include "discretisation/nonlocal_average.hpp"
+#include "discretisation/nonlocal/nonlocal_average.hpp"
 #include "tasks/g2p.hpp"
 
 namespace flowmpm {

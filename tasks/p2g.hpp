@@ -8,7 +8,7 @@
 // In 1D and 2D only the in-plane block of sigma enters the force.
 // USL and MUSL map both from the same particle state, in one pass.
 #pragma once
-#include "discretisation/stencil.hpp"
+#include "discretisation/grid/stencil.hpp"
 #include "tasks/parallel_blocks.hpp"
 
 namespace flowmpm {

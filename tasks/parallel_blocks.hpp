@@ -8,7 +8,7 @@
 #include <algorithm>
 
 #include "discretisation/discrete_system.hpp"
-#include "discretisation/stencil.hpp"
+#include "discretisation/grid/stencil.hpp"
 
 namespace flowmpm {
 

@@ -40,7 +40,7 @@
 #include <array>
 #include <type_traits>
 
-#include "discretisation/stencil.hpp"
+#include "discretisation/grid/stencil.hpp"
 #include "tasks/parallel_blocks.hpp"
 
 namespace flowmpm {

@@ -11,7 +11,7 @@
 
 #include <Eigen/Dense>
 
-#include "io/case_reader.hpp"
+#include "io/case/case_reader.hpp"
 #include "materials/material.hpp"
 #include "materials/rotation.hpp"
 

@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "discretisation/shape_functions.hpp"
+#include "discretisation/shapes/shape_functions.hpp"
 #include "test_helpers.hpp"
 
 using namespace flowmpm;

@@ -7,8 +7,8 @@
 #include <cmath>
 #include <vector>
 
-#include "discretisation/shape_linear.hpp"
-#include "io/case_file.hpp"
+#include "discretisation/shapes/shape_linear.hpp"
+#include "io/case/case_file.hpp"
 #include "test_helpers.hpp"
 
 using namespace flowmpm;

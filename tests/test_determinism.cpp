@@ -12,10 +12,10 @@
 
 #include <algorithm>
 
-#include "discretisation/shape_bspline.hpp"
-#include "discretisation/shape_gimp.hpp"
-#include "discretisation/shape_functions.hpp"
-#include "discretisation/shape_linear.hpp"
+#include "discretisation/shapes/shape_bspline.hpp"
+#include "discretisation/shapes/shape_gimp.hpp"
+#include "discretisation/shapes/shape_functions.hpp"
+#include "discretisation/shapes/shape_linear.hpp"
 #include "engine/simulation.hpp"
 #include "test_helpers.hpp"
 

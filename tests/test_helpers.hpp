@@ -8,7 +8,7 @@
 #include "app/run_case.hpp"
 #include "engine/schemes.hpp"
 #include "engine/simulation.hpp"
-#include "io/case_file.hpp"
+#include "io/case/case_file.hpp"
 
 namespace flowmpm::testing {
 

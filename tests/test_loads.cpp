@@ -13,7 +13,7 @@
 #include <fstream>
 #include <numbers>
 
-#include "discretisation/shape_functions.hpp"
+#include "discretisation/shapes/shape_functions.hpp"
 #include "run_program.hpp"
 #include "test_helpers.hpp"
 

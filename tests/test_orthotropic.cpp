@@ -29,7 +29,7 @@
 #include <numbers>
 #include <random>
 
-#include "discretisation/shape_linear.hpp"
+#include "discretisation/shapes/shape_linear.hpp"
 #include "engine/simulation.hpp"
 #include "material_point_driver.hpp"
 #include "test_helpers.hpp"

@@ -23,12 +23,12 @@
 #include <sanitizer/lsan_interface.h>
 #endif
 
-#include "io/atomic_file.hpp"
-#include "io/results_h5.hpp"
-#include "io/results_index.hpp"
-#include "io/summary_json.hpp"
-#include "io/timeseries_csv.hpp"
-#include "io/xdmf.hpp"
+#include "io/results/atomic_file.hpp"
+#include "io/results/results_h5.hpp"
+#include "io/results/results_index.hpp"
+#include "io/results/summary_json.hpp"
+#include "io/results/timeseries_csv.hpp"
+#include "io/results/xdmf.hpp"
 
 namespace fs = std::filesystem;
 using namespace flowmpm;

@@ -16,8 +16,8 @@
 //    stress at the end of the step, and the volume change, 0.06 %).
 #include <doctest/doctest.h>
 
-#include "discretisation/shape_bspline.hpp"
-#include "discretisation/shape_linear.hpp"
+#include "discretisation/shapes/shape_bspline.hpp"
+#include "discretisation/shapes/shape_linear.hpp"
 #include "test_helpers.hpp"
 
 using namespace flowmpm;

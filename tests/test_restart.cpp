@@ -25,7 +25,7 @@
 #include <vector>
 
 #include "engine/state_records.hpp"
-#include "io/checkpoint_file.hpp"
+#include "io/results/checkpoint_file.hpp"
 #include "materials/material.hpp"
 #include "run_program.hpp"
 

@@ -20,7 +20,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "discretisation/shape_linear.hpp"
+#include "discretisation/shapes/shape_linear.hpp"
 #include "test_helpers.hpp"
 
 using namespace flowmpm;

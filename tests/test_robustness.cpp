@@ -18,8 +18,8 @@
 #include <thread>
 #include <vector>
 
-#include "io/case_file.hpp"
-#include "io/memory_estimate.hpp"
+#include "io/case/case_file.hpp"
+#include "io/case/memory_estimate.hpp"
 #include "run_program.hpp"
 #include "test_helpers.hpp"
 

@@ -14,7 +14,7 @@
 #include <numbers>
 #include <sstream>
 
-#include "discretisation/shape_functions.hpp"
+#include "discretisation/shapes/shape_functions.hpp"
 #include "run_program.hpp"
 #include "test_helpers.hpp"
 

@@ -11,10 +11,10 @@
 #include <map>
 #include <random>
 
-#include "discretisation/shape_bspline.hpp"
-#include "discretisation/shape_gimp.hpp"
-#include "discretisation/shape_linear.hpp"
-#include "discretisation/stencil.hpp"
+#include "discretisation/shapes/shape_bspline.hpp"
+#include "discretisation/shapes/shape_gimp.hpp"
+#include "discretisation/shapes/shape_linear.hpp"
+#include "discretisation/grid/stencil.hpp"
 
 using namespace flowmpm;
 

@@ -10,7 +10,7 @@
 
 #include "engine/schemes.hpp"
 #include "engine/stable_time_step.hpp"
-#include "io/case_file.hpp"
+#include "io/case/case_file.hpp"
 #include "test_helpers.hpp"
 
 using namespace flowmpm;

@@ -27,7 +27,7 @@
 
 #include <tbb/global_control.h>
 
-#include "discretisation/shape_linear.hpp"
+#include "discretisation/shapes/shape_linear.hpp"
 #include "engine/simulation.hpp"
 #include "test_helpers.hpp"
 

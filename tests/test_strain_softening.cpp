@@ -38,9 +38,9 @@
 #include <numbers>
 #include <sstream>
 
-#include "discretisation/nonlocal_average.hpp"
-#include "discretisation/shape_bspline.hpp"
-#include "discretisation/shape_linear.hpp"
+#include "discretisation/nonlocal/nonlocal_average.hpp"
+#include "discretisation/shapes/shape_bspline.hpp"
+#include "discretisation/shapes/shape_linear.hpp"
 #include "engine/simulation.hpp"
 #include "material_point_driver.hpp"
 #include "test_helpers.hpp"
@@ -339,7 +339,7 @@ TEST_CASE("the shipped strain-softening bar (63 cells) breaks at the notch and d
 
 // ---------------------------------------------------------------------------
 // Nonlocal band opening (nonlocal_length; materials/strain_softening.hpp,
-// discretisation/nonlocal_average.hpp, tasks/nonlocal_settle.hpp).
+// discretisation/nonlocal/nonlocal_average.hpp, tasks/nonlocal_settle.hpp).
 
 namespace {
 

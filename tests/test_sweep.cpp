@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "io/case_reader.hpp"
-#include "io/sweep_file.hpp"
+#include "io/case/case_reader.hpp"
+#include "io/case/sweep_file.hpp"
 #include "run_program.hpp"
 #include "sweep_csv.hpp"
 

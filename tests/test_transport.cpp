@@ -29,7 +29,7 @@
 #include <sstream>
 #include <string>
 
-#include "discretisation/shape_linear.hpp"
+#include "discretisation/shapes/shape_linear.hpp"
 #include "engine/stable_time_step.hpp"
 #include "material_point_driver.hpp"
 #include "test_helpers.hpp"

@@ -27,7 +27,7 @@
 #include <limits>
 #include <numbers>
 
-#include "discretisation/shape_linear.hpp"
+#include "discretisation/shapes/shape_linear.hpp"
 #include "engine/simulation.hpp"
 #include "material_point_driver.hpp"
 #include "test_helpers.hpp"

@@ -2,4 +2,4 @@
 // report it (tests/CMakeLists.txt, layer_order_detects_a_wrong_include).
 #pragma once
 #include "core/vec.hpp"
-#include "discretisation/grid.hpp"
+#include "discretisation/grid/grid.hpp"
