@@ -15,9 +15,10 @@
 #
 # --array must be a plain range (0-7, or 1-8; a %limit is fine, a :step is
 # not): its N tasks are the N shards. Each task asks for --cpus-per-task
-# CPUs (default 4, the #SBATCH line below: a node of any size grants it)
-# and runs its shard on that many threads; the collect job computes nothing
-# and needs one. Array tasks log to flowmpm-sweep-JOB_TASK.out; give the
+# CPUs (default 4, the #SBATCH line below, which all but the smallest nodes
+# have; a task asking for more CPUs than a node has never starts) and runs
+# its shard on that many threads; the collect job computes nothing and
+# needs one. Array tasks log to flowmpm-sweep-JOB_TASK.out; give the
 # collect job its own --output (a job outside an array has no task number:
 # %a would print 4294967294). Extra arguments go to flowmpm (e.g.
 # --output DIR; give the same to both). The output directory must be on a
