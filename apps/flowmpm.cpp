@@ -75,7 +75,7 @@ Arguments parse(int argc, char** argv) {
   app.footer(
       "Exit status: 0 on success, 1 for a bad case file, sweep file or command line, 2 if the simulation "
       "(or a case of the sweep) failed, 130 if interrupted. `flowmpm COMMAND --help` lists a command's "
-      "options; README.md has the case file keys.");
+      "options; docs/reference/ has every case file key.");
   const auto threads = [&](CLI::App* command) {
     command->add_option("--threads", a.threads, "worker threads (default: all cores); results do not depend on it")
         ->check(CLI::Range(1, 1024));

@@ -1,18 +1,23 @@
 #!/usr/bin/env bash
 # Plots an error norm of a sweep against the wall time of its cases:
-#   scripts/plot_sweep.sh SWEEP_DIR ERROR_COLUMN [GROUP_COLUMN ...]
+#   scripts/plot_sweep.sh SWEEP_DIR ERROR_COLUMN [COLOUR_COLUMN [MARKER_COLUMN [DASH_COLUMN]]]
 # reads SWEEP_DIR/sweep.csv (written by `flowmpm sweep`) and draws, log-log,
 # ERROR_COLUMN against wall_seconds with one line per distinct combination of
-# the GROUP_COLUMNs, its points joined in case order (the order of the
+# the grouping columns, its points joined in case order (the order of the
 # varied keys, e.g. increasing resolution, not of the noisy wall time), into
-# SWEEP_DIR/speed_vs_error.png. Lines differ by colour, dash and point
-# type. Only completed cases with a positive error and wall time are drawn.
-# Needs gnuplot (Debian package gnuplot-nox) and python3, both installed by
-# scripts/setup.sh.
+# SWEEP_DIR/speed_vs_error.png. The first grouping column sets the colour
+# (a shape function keeps its colour in every plot: linear blue, uGIMP
+# orange, B-spline 2 green, B-spline 3 red), the second the marker (a
+# scheme keeps its marker: USF circle, USL square, MUSL triangle), a third
+# the dash. The legend has one entry per colour and one per marker, not
+# one per line; the title names the sweep (the folder's name) and the
+# error. Only completed cases with a positive error and wall time are
+# drawn. Needs gnuplot (Debian package gnuplot-nox) and python3, both
+# installed by scripts/setup.sh.
 set -euo pipefail
 
 if (($# < 2)); then
-  echo "usage: $0 SWEEP_DIR ERROR_COLUMN [GROUP_COLUMN ...]" >&2
+  echo "usage: $0 SWEEP_DIR ERROR_COLUMN [COLOUR_COLUMN [MARKER_COLUMN [DASH_COLUMN]]]" >&2
   exit 1
 fi
 dir=$1
@@ -26,7 +31,7 @@ gnuplot -e "set terminal pngcairo" 2>/dev/null && terminal=pngcairo
 # python3 reads the CSV (quoted fields included) and writes the gnuplot
 # script, the data inline as one datablock per line of the plot.
 script=$(python3 - "$csv" "$png" "$terminal" "${@:2}" <<'EOF'
-import csv, math, sys
+import csv, math, os, sys
 
 csv_file, png, terminal, error, groups = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4], sys.argv[5:]
 with open(csv_file, newline="") as f:
@@ -57,25 +62,67 @@ if left_out:
 if not lines:
     sys.exit(f"plot_sweep: no completed case in {csv_file} has a positive {error} and wall_seconds")
 
+if len(groups) > 3:
+    sys.exit("plot_sweep: at most three grouping columns (colour, marker, dash)")
+
 def quoted(text):  # a gnuplot single-quoted string
     return "'" + text.replace("'", "''") + "'"
 
-# The key goes below the plot; the image grows with it.
-out = [f"set terminal {terminal} size 1000,{600 + 20 * len(lines)}", f"set output {quoted(png)}", "set termoption noenhanced",
+# Fixed styles for the values the engine knows, so that a shape function has
+# the same colour and a scheme the same marker in every plot.
+COLOURS = {"linear": "#1f77b4", "gimp": "#ff7f0e", "bspline2": "#2ca02c", "bspline3": "#d62728"}
+PALETTE = ["#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#7f7f7f"]
+MARKERS = {"usf": 7, "usl": 5, "musl": 9}  # filled circle, square, triangle
+MARKER_LIST = [7, 5, 9, 11, 13, 15, 4, 6]
+LABELS = {"linear": "linear", "gimp": "uGIMP", "bspline2": "B-spline 2", "bspline3": "B-spline 3",
+          "usf": "USF", "usl": "USL", "musl": "MUSL", "flip": "FLIP", "pic": "PIC", "blend": "blend"}
+NAMES = {"analysis.shape_function": "shape function", "analysis.scheme": "scheme",
+         "analysis.velocity_update": "velocity update"}
+
+def values_of(k):  # the distinct values of grouping column k, in case order
+    seen = []
+    for key in lines:
+        if key[k] not in seen:
+            seen.append(key[k])
+    return seen
+
+def colour(value, k):
+    return COLOURS.get(value) or PALETTE[values_of(k).index(value) % len(PALETTE)]
+
+def marker(value, k):
+    return MARKERS.get(value) or MARKER_LIST[values_of(k).index(value) % len(MARKER_LIST)]
+
+def label(value):
+    return LABELS.get(value, value)
+
+sweep = os.path.basename(os.path.normpath(os.path.dirname(os.path.abspath(csv_file))))
+out = [f"set terminal {terminal} size 1000,650", f"set output {quoted(png)}", "set termoption noenhanced",
        "set logscale xy", "set format x '%g'", "set format y '%g'", "set grid",
-       "set key below",
+       "set key outside right top vertical Left reverse samplen 2 spacing 1.2",
        "set xlabel 'wall time of the step loop (s)'",
-       f"set ylabel {quoted('relative RMS error: ' + error + ' (sweep.csv column)')}",
-       f"set title {quoted(error + ' error against wall time: ' + csv_file)}"]
+       f"set ylabel {quoted('relative RMS error: ' + error)}",
+       f"set title {quoted(sweep + ': ' + error + ' error against wall time')}"]
 plots = []
 for i, (key, points) in enumerate(lines.items()):
     out.append(f"$line{i} << EOD")
     out += [f"{x!r} {y!r}" for _, x, y in sorted(points)]
     out.append("EOD")
-    title = ", ".join(f"{g}={v}" for g, v in zip(groups, key)) or error
-    # 8 colours, then dashed, so that every line differs from every other.
-    style = f"linecolor {i % 8 + 1} dashtype {i // 8 + 1} pointtype {i % 13 + 1}"
-    plots.append(f"$line{i} using 1:2 with linespoints {style} linewidth 2 pointsize 1.2 title {quoted(title)}")
+    style = f"linecolor rgb {quoted(colour(key[0], 0)) if groups else quoted(PALETTE[0])}"
+    style += f" pointtype {marker(key[1], 1) if len(groups) > 1 else 7}"
+    style += f" dashtype {values_of(2).index(key[2]) + 1 if len(groups) > 2 else 1}"
+    plots.append(f"$line{i} using 1:2 with linespoints {style} linewidth 2 pointsize 1.3 notitle")
+# The legend: one entry per colour, per marker, per dash, under the grouping
+# column's name.
+for k, name in enumerate(groups):
+    plots.append(f"keyentry with lines linecolor rgb '#ffffff' title {quoted(NAMES.get(name, name) + ':')}")
+    for value in values_of(k):
+        if k == 0:
+            style = f"with lines linecolor rgb {quoted(colour(value, 0))} linewidth 3"
+        elif k == 1:
+            style = f"with points linecolor rgb 'black' pointtype {marker(value, 1)} pointsize 1.3"
+        else:
+            style = f"with lines linecolor rgb 'black' dashtype {values_of(2).index(value) + 1} linewidth 2"
+        plots.append(f"keyentry {style} title {quoted(label(value))}")
 out.append("plot " + ", \\\n     ".join(plots))
 print("\n".join(out))
 EOF

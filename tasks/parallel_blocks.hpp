@@ -14,10 +14,9 @@ namespace flowmpm {
 
 // The least work worth a task of its own, in particle-node pairs (a
 // particle's stencil nodes, or grid nodes): below it, waking a second
-// thread costs more than the work. A 1D bar of 1,024 particles (2 nodes
-// each) ran at 26.8 M particle-steps/s on 1 thread and 11.4 M on 2 when
-// every loop was split; a 3D block of 10^4 particles (8 nodes each) gains
-// from 2 threads.
+// thread costs more than the work. A small 1D bar ran slower on 2 threads
+// than on 1 when every loop was split; a 3D block of 10^4 particles (8
+// nodes each) gains from 2 threads (measured: docs/performance.md).
 constexpr std::size_t min_pairs_per_task = 2048;
 
 // Blocks per task for the particle loops: enough for min_pairs_per_task at

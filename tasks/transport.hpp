@@ -25,10 +25,10 @@
 // R_I = P_I, and the node follows the prescribed change (as the mirror image
 // of the particles beyond the face would make it); what the grid cannot see
 // (the step of a face held at another value than the body starts at) is
-// relaxed away. Measured on the slab: second order. The increment
-// T_b(t + dt) - P_I pins the one-sided map P_I to T_b, which on the particle
-// lattice is 0.375 h dT/dx away from it: first order at the face (RMS rate
-// 1.5); T_b(t + dt) - T_b(t) alone keeps the step forever (rate 0.5).
+// relaxed away. The increment T_b(t + dt) - P_I pins the one-sided map P_I
+// to T_b, which on the particle lattice is 0.375 h dT/dx away from it:
+// first order at the face; T_b(t + dt) - T_b(t) alone keeps the step
+// forever. The rates each gives on the slab: docs/theory/transport.md.
 // Solvent, rho dc/dt = div(rho D grad c) for a weight fraction c: the same
 // with m_p for m_p C_p and m_p D (= V_p rho D) for V_p k, so that
 // sum_p m_p c_p, the solvent mass, changes only through the boundaries.

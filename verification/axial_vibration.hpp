@@ -12,14 +12,14 @@
 // compared with the exact velocity there; compared at t it would show a
 // spurious first-order error. Small v0 keeps particles inside their cells;
 // large v0 makes them cross cells.
-// Amplitude: the engine integrates the logarithmic strain (README
-// "Kinematics"), so the bar obeys rho u_tt = E d/dX ln(1 + u_X) (nu = 0),
-// not E u_XX: the laws differ by e / 2 at strain e, and the error norms
-// have a floor of about 0.2 e, e = v0 / c, whatever the resolution
-// (measured: 2.1e-4 at e = 1e-3, 1.1 % at 5 %, 2.5 % at 10 %). The
-// small-amplitude case and the convergence tests run at e = 1e-5 (floor
-// 2e-6, at least 18 times below their errors); the large-amplitude case
-// (e = 5 %) is at its 1 % floor.
+// Amplitude: the engine integrates the logarithmic strain
+// (docs/theory/kinematics.md), so the bar obeys
+// rho u_tt = E d/dX ln(1 + u_X) (nu = 0), not E u_XX: the laws differ by
+// e / 2 at strain e, and the error norms have a floor of about 0.2 e,
+// e = v0 / c, whatever the resolution (the measured floors are on that
+// page). The small-amplitude case and the convergence tests run at
+// e = 1e-5, far below their errors; the large-amplitude case (e = 5 %) is
+// at its floor.
 #pragma once
 #include <cmath>
 #include <cstdint>

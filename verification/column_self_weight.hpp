@@ -10,10 +10,10 @@
 // displacement rho g H^2 / (2 M). 2D (plane strain) or 3D.
 // Amplitude: the small-strain solution is the yardstick while the strain
 // at the base, e = rho g H / M, is small: with the engine's logarithmic
-// strain (README "Kinematics") the error has a floor of about 0.85 e
-// (measured with g = 10, 100, 1000 m/s^2 on the shipped column: 0.51 %,
-// 0.83 %, 6.3 %); the shipped e = 7.4e-4 puts it at 6e-4, below the
-// 0.4-0.6 % discretisation error at 20 cells.
+// strain (docs/theory/kinematics.md) the error has a floor of about
+// 0.85 e (measured on the shipped column: that page); the shipped
+// e = 7.4e-4 puts it below the discretisation error at 20 cells
+// (docs/validation/column_self_weight.md).
 #pragma once
 #include <cmath>
 #include <map>
