@@ -1,6 +1,7 @@
 #include "io/case/case_reader.hpp"
 
 #include "core/registry.hpp"
+#include "io/case/key_registry.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -87,8 +88,13 @@ std::string TableReader::dotted(std::string_view key) const {
   return path_.empty() ? std::string(key) : path_ + "." + std::string(key);
 }
 
-bool TableReader::has(std::string_view key) const {
+void TableReader::ask(std::string_view key) const {
   known_.emplace(key);
+  record_asked_key(path_, key);
+}
+
+bool TableReader::has(std::string_view key) const {
+  ask(key);
   return table_->contains(key);
 }
 
@@ -126,13 +132,13 @@ const toml::node& TableReader::required(std::string_view key) {
     throw CaseError(source_of(*table_, file_) + ": " + dotted(key) + ": missing required key");
   }
   used_.emplace(key);
-  known_.emplace(key);
+  ask(key);
   return *n;
 }
 
 const toml::node* TableReader::node(std::string_view key) {
   const toml::node* n = table_->get(key);
-  known_.emplace(key);
+  ask(key);
   if (n) used_.emplace(key);
   return n;
 }

@@ -66,6 +66,9 @@ class TableReader : public ParameterTable {
   std::string table_failure(std::string_view message) const override;
 
  private:
+  // Notes `key` as one this table understands (for "did you mean") and in
+  // the reader's registry of keys (io/case/key_registry.hpp).
+  void ask(std::string_view key) const;
   const toml::node& required(std::string_view key);
   // "file:line" of a node, or the --set that gave it.
   std::string location(const toml::node& node, std::string_view key) const;
