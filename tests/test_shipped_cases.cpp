@@ -78,10 +78,10 @@ TEST_CASE("configs/bodies/graded_column_h5.toml: an HDF5 body with graded partic
   CHECK(c.system.bodies[0].particles->size() == 512);
   const double rho = 1000.0, g = 10.0, H = 1.0, E = 1e6, nu = 0.3;
   const double M = E * (1 - nu) / ((1 + nu) * (1 - 2 * nu)), top = rho * g * H * H / (2 * M);
-  REQUIRE(c.system.shape_function == "linear");
+  REQUIRE(c.system.shape_function == shape_function_named("linear"));
   auto sim = testing::simulation<2, LinearShape>(c);
   const std::vector<Vec<2>> x0 = positions_by_id(sim);
-  for (std::int64_t k = 0; k < c.steps; ++k) sim.advance();
+  for (std::int64_t k = 0; k < c.time_control.steps; ++k) sim.advance();
   double largest_u = 0.0, largest_sigma = 0.0, kinetic = 0.0, mean_syy = 0.0, volume = 0.0;
   for (const auto& b : sim.system().batches) {
     for (std::size_t p = 0; p < b.size(); ++p) {
@@ -127,10 +127,10 @@ TEST_CASE("configs/bodies/soil_layer_geostatic.toml: a K0 layer stays at rest wi
   // keep sigma_yy = -rho g (top - y) and sigma_xx = sigma_zz = K0 sigma_yy.
   const Case c = read_case(testing::config("bodies/soil_layer_geostatic.toml"));
   const double rho = 1800.0, g = 9.81, top = 2.0, k0 = 0.5;
-  REQUIRE(c.system.shape_function == "linear");
+  REQUIRE(c.system.shape_function == shape_function_named("linear"));
   auto sim = testing::simulation<2, LinearShape>(c);
   const std::vector<Vec<2>> x0 = positions_by_id(sim);
-  for (std::int64_t k = 0; k < c.steps; ++k) sim.advance();
+  for (std::int64_t k = 0; k < c.time_control.steps; ++k) sim.advance();
   double vertical = 0.0, horizontal = 0.0, out_of_plane = 0.0, shear = 0.0, moved = 0.0;
   std::size_t n = 0;
   for (const auto& b : sim.system().batches) {
@@ -145,7 +145,7 @@ TEST_CASE("configs/bodies/soil_layer_geostatic.toml: a K0 layer stays at rest wi
     }
   }
   const double scale = rho * g * top;  // the vertical stress at the base, 35.3 kPa
-  MESSAGE("soil layer (K0 = 0.5), after " << c.steps << " steps (" << c.end_time << " s) on " << n
+  MESSAGE("soil layer (K0 = 0.5), after " << c.time_control.steps << " steps (" << c.time_control.end_time << " s) on " << n
           << " particles: largest |sigma_yy + rho g depth| = " << vertical / scale << ", |sigma_xx - K0 sigma_v| = "
           << horizontal / scale << ", |sigma_zz - K0 sigma_v| = " << out_of_plane / scale << ", |sigma_xy| = "
           << shear / scale << " of rho g H = " << scale << " Pa; largest displacement " << moved << " m");
