@@ -49,8 +49,8 @@ void log_system(spdlog::logger& log, const Case& c, const Simulation<D, Shape>& 
                  c.system.bodies[b.body].name, b.size(), m.name, type_name(m.model), density(m.model),
                  wave_speed(m.model));
   }
-  log.info("particle fields stored: {}", stored_fields(D, system.heat.carried, system.solvent.carried));
-  if (system.nonlocal.active) {
+  log.info("particle fields stored: {}", stored_fields(D, system.heat.has_value(), system.solvent.has_value()));
+  if (system.nonlocal) {
     log.info("nonlocal averages: over the initial positions (x0 stored), settled with the step's end by "
              "nonlocal_settle");
   }
@@ -58,13 +58,14 @@ void log_system(spdlog::logger& log, const Case& c, const Simulation<D, Shape>& 
     log.info("node set '{}': {} nodes, velocity prescribed along {}", k.name, k.nodes.size(),
                  "xyz"[k.axis]);
   }
-  if (system.heat.carried || system.solvent.carried) {
+  if (system.heat || system.solvent) {
     log.info("transport: {}{}{} on the grid, a branch of the step graph beside the momentum stages",
-             system.heat.carried ? "heat conduction" : "", system.heat.carried && system.solvent.carried ? " and " : "",
-             system.solvent.carried ? "solvent diffusion" : "");
+             system.heat ? "heat conduction" : "", system.heat && system.solvent ? " and " : "",
+             system.solvent ? "solvent diffusion" : "");
   }
   for (const auto* field : {&system.heat, &system.solvent}) {
-    for (const auto& k : field->prescribed) {
+    if (!*field) continue;
+    for (const auto& k : (*field)->prescribed) {
       log.info("node set '{}': {} nodes, {} prescribed", k.name, k.nodes.size(),
                field == &system.heat ? "temperature" : "concentration");
     }

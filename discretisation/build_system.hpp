@@ -112,8 +112,8 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
   system.flip_fraction = spec.flip_fraction;
   if (D == 2 && spec.plane_stress) system.stress_state = StressState::plane_stress;
   system.dt = spec.dt;
-  system.heat.carried = spec.conducts_heat();
-  system.solvent.carried = spec.diffuses_solvent();
+  if (spec.conducts_heat()) system.heat.emplace();
+  if (spec.diffuses_solvent()) system.solvent.emplace();
   for (const SurfaceFluxSpec& f : spec.surface_fluxes) {
     const BodySpec& body = spec.bodies[f.body];
     double area = 1.0;  // the spacing's cell over its thickness normal to the face
@@ -182,7 +182,7 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
     }
     for (std::size_t p = 0; p < n; ++p) batch.stress.push_back(detail::initial_stress(body, list, p, rho, top));
     batch.strain.assign(n, Voigt{});
-    if (system.heat.carried) {
+    if (system.heat) {
       batch.temperature.assign(n, body.temperature);
       // The change since the stress-free state, for the first stress
       // update: T - T_ref (materials/expansion.hpp).
@@ -191,7 +191,7 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
       for (const double v : list.volume)
         least_heat_capacity = std::min(least_heat_capacity, rho * v * transport(system.materials[body.material]).heat_capacity);
     }
-    if (system.solvent.carried) {
+    if (system.solvent) {
       batch.concentration.assign(n, body.concentration);
       batch.concentration_step.assign(n, body.concentration);  // since c = 0, stress free
     }
@@ -239,13 +239,13 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
   // A node holding less than a millionth of the least particle capacity
   // only sees the far tail of a shape function: its transport update
   // dt Q / (mC) is noise, and it keeps its value.
-  if (system.heat.carried) {
+  if (system.heat) {
     system.grid.heat.allocate(system.grid.node_count());
-    system.heat.capacity_threshold = 1e-6 * least_heat_capacity;
+    system.heat->capacity_threshold = 1e-6 * least_heat_capacity;
   }
-  if (system.solvent.carried) {
+  if (system.solvent) {
     system.grid.solvent.allocate(system.grid.node_count());
-    system.solvent.capacity_threshold = 1e-6 * lightest;
+    system.solvent->capacity_threshold = 1e-6 * lightest;
   }
   // Particle ids in the order the particles were made: their rows in the output.
   std::uint32_t next_id = 0;
@@ -278,8 +278,8 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
     for (int d = 0; d < D; ++d) {
       if (set.velocity[d]) system.constraints.push_back({set.name, nodes, d, *set.velocity[d]});
     }
-    if (set.temperature) system.heat.prescribed.push_back({set.name, nodes, *set.temperature});
-    if (set.concentration) system.solvent.prescribed.push_back({set.name, nodes, *set.concentration});
+    if (set.temperature) system.heat->prescribed.push_back({set.name, nodes, *set.temperature});
+    if (set.concentration) system.solvent->prescribed.push_back({set.name, nodes, *set.concentration});
     if (set.constrains_velocity()) {
       auto pairs = ghost_mirror_pairs<D, Shape>(system, set, nodes);
       if (!pairs.empty()) {

@@ -58,10 +58,9 @@ struct PrescribedValue {
   TimeFunction value;  // K or weight fraction
 };
 
-// Heat or solvent transport (tasks/transport.hpp): whether the particles
-// carry the field, and its prescribed nodal values.
+// Heat or solvent transport (tasks/transport.hpp), present in a system
+// only when its scene carries the field: its prescribed nodal values.
 struct TransportField {
-  bool carried = false;
   // Nodes with less capacity than this (a millionth of the smallest
   // particle's) only see the far tail of a shape function: their rate
   // flow / capacity would be noise, so their value is left as mapped.
@@ -118,6 +117,18 @@ struct WorkDone {
   double load = 0.0;       // by the tractions, pressures and nodal forces (README "Loads")
 };
 
+// The nonlocal averages of a system whose models ask for them: the bins of
+// the particles' initial positions and, per particle that has been a
+// source, (batch << 32 | particle): the particles within the cut-off and
+// their weights alpha, in a fixed order; dropped with the bins when the
+// particles are re-sorted.
+template <int D>
+struct NonlocalAverages {
+  NonlocalBins<D> bins;
+  std::unordered_map<std::uint64_t, std::vector<NonlocalNeighbour>> neighbours;
+  std::int64_t unsettled_steps = 0;  // steps whose averages did not settle
+};
+
 // The system's clock and its run-wide sums: what the time loop and its
 // services read and set, the same for every dimension and shape function
 // (engine/simulation_base.hpp hands them out without the system's type).
@@ -149,23 +160,17 @@ struct DiscreteSystem : SystemScalars {
   std::vector<Material> materials;
   std::vector<NodeConstraint> constraints;
   std::vector<MirrorPlane> mirror_planes;
-  TransportField heat, solvent;
+  // Transport: present only in a scene that conducts heat (diffuses
+  // solvent); the particles then carry the field.
+  std::optional<TransportField> heat, solvent;
   std::vector<SurfaceFlux> surface_fluxes;
   Vec<D> gravity = Vec<D>::Zero();
   ExternalLoads<D> loads;          // tractions, pressures, nodal and body forces
   std::optional<Damping> damping;  // quasi-static damping, if the case has it
   double flip_fraction = 1.0;
-  // Nonlocal averages, only when a model asks for them
+  // Nonlocal averages: present only when a model asks for them
   // (discretisation/nonlocal/nonlocal_average.hpp, tasks/nonlocal_settle.hpp).
-  struct Nonlocal {
-    bool active = false;
-    NonlocalBins<D> bins;
-    // Per particle that has been a source, (batch << 32 | particle): the
-    // particles within the cut-off and their weights alpha, in a fixed
-    // order; dropped with the bins when the particles are re-sorted.
-    std::unordered_map<std::uint64_t, std::vector<NonlocalNeighbour>> neighbours;
-    std::int64_t unsettled_steps = 0;  // steps whose averages did not settle
-  } nonlocal;
+  std::optional<NonlocalAverages<D>> nonlocal;
 
   StepFlags flags;
 

@@ -57,7 +57,7 @@ void visit_carried_state(System& s, F&& f) {
   f("work.expansion", s.work.expansion);
   f("work.load", s.work.load);
   f("damping.dissipated", s.damping_dissipated);
-  f("nonlocal.unsettled_steps", s.nonlocal.unsettled_steps);
+  if (s.nonlocal) f("nonlocal.unsettled_steps", s.nonlocal->unsettled_steps);
 }
 
 template <int D, class Shape>

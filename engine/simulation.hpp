@@ -49,7 +49,7 @@ class Simulation final : public SimulationBase {
   SystemScalars& scalars() override { return system_; }
   const SystemScalars& scalars() const override { return system_; }
   SystemSize size() const override;
-  std::int64_t unsettled_steps() const override { return system_.nonlocal.unsettled_steps; }
+  std::int64_t unsettled_steps() const override { return system_.nonlocal ? system_.nonlocal->unsettled_steps : 0; }
   bool damped() const override { return system_.damping.has_value(); }
   void measure_speed() override;
   Diagnostics diagnostics(std::size_t body_count) const override;

@@ -107,12 +107,12 @@ void with_stress_update(DiscreteSystem<D, Shape>& system, ParticleBatch<D>& b, F
         using M = std::decay_t<decltype(material)>;
         auto& states = std::get<StateArray<M>>(b.states);
         TransportedInput transported;
-        if (!b.temperature.empty()) {
+        if (system.heat) {
           transported.temperature = b.temperature.data();
           transported.temperature_step = b.temperature_step.data();
           transported.reference_temperature = material.transport().reference_temperature.value_or(0.0);
         }
-        if (!b.concentration.empty()) {
+        if (system.solvent) {
           transported.concentration = b.concentration.data();
           transported.concentration_step = b.concentration_step.data();
         }

@@ -71,7 +71,7 @@ void nonlocal_settle(DiscreteSystem<D, Shape>& system) {
           system.materials[b.material]);
     }
   }
-  ++system.nonlocal.unsettled_steps;
+  ++system.nonlocal->unsettled_steps;
 }
 
 }  // namespace flowmpm

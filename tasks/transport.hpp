@@ -98,8 +98,8 @@ void transport_p2g(DiscreteSystem<D, Shape>& system) {
     if constexpr (Heat) nodal_value(heat, n);
     if constexpr (Solvent) nodal_value(solvent, n);
   });
-  if constexpr (Heat) apply_prescribed(system.heat, heat.value, system.t);
-  if constexpr (Solvent) apply_prescribed(system.solvent, solvent.value, system.t);
+  if constexpr (Heat) apply_prescribed(*system.heat, heat.value, system.t);
+  if constexpr (Solvent) apply_prescribed(*system.solvent, solvent.value, system.t);
 }
 
 // k_p (heat) or D_p (solvent) in global axes, the D x D block of
@@ -210,8 +210,8 @@ void transport_update(DiscreteSystem<D, Shape>& system) {
     if (f.capacity[n] > threshold) f.value[n] += dt * f.flow[n] / f.capacity[n];
   };
   for_each_active_node(grid, [&](std::size_t n, const Index<D>&) {
-    if constexpr (Heat) advance(grid.heat, system.heat.capacity_threshold, n);
-    if constexpr (Solvent) advance(grid.solvent, system.solvent.capacity_threshold, n);
+    if constexpr (Heat) advance(grid.heat, system.heat->capacity_threshold, n);
+    if constexpr (Solvent) advance(grid.solvent, system.solvent->capacity_threshold, n);
   });
   // At a prescribed node the increment becomes u_b(t + dt) - u_b(t) + R_I - P_I
   // (see the top of this file): `change` holds P_I, it takes u_b(t) - R_I.
@@ -222,10 +222,10 @@ void transport_update(DiscreteSystem<D, Shape>& system) {
         if (f.capacity[n] > 0.0) f.change[n] += start - f.reprojected[n] / f.capacity[n];
     }
   };
-  if constexpr (Heat) prescribed_start(system.heat, grid.heat);
-  if constexpr (Solvent) prescribed_start(system.solvent, grid.solvent);
-  if constexpr (Heat) apply_prescribed(system.heat, grid.heat.value, system.t + dt);
-  if constexpr (Solvent) apply_prescribed(system.solvent, grid.solvent.value, system.t + dt);
+  if constexpr (Heat) prescribed_start(*system.heat, grid.heat);
+  if constexpr (Solvent) prescribed_start(*system.solvent, grid.solvent);
+  if constexpr (Heat) apply_prescribed(*system.heat, grid.heat.value, system.t + dt);
+  if constexpr (Solvent) apply_prescribed(*system.solvent, grid.solvent.value, system.t + dt);
   for_each_active_node(grid, [&](std::size_t n, const Index<D>&) {
     if constexpr (Heat) grid.heat.change[n] = grid.heat.value[n] - grid.heat.change[n];
     if constexpr (Solvent) grid.solvent.change[n] = grid.solvent.value[n] - grid.solvent.change[n];
@@ -261,11 +261,11 @@ void transport_g2p(DiscreteSystem<D, Shape>& system) {
 // carries: one dispatch per pass.
 template <int D, class Shape, class F>
 void with_transported_fields(const DiscreteSystem<D, Shape>& system, F&& f) {
-  if (system.heat.carried && system.solvent.carried) {
+  if (system.heat && system.solvent) {
     f.template operator()<true, true>();
-  } else if (system.heat.carried) {
+  } else if (system.heat) {
     f.template operator()<true, false>();
-  } else if (system.solvent.carried) {
+  } else if (system.solvent) {
     f.template operator()<false, true>();
   }
 }

@@ -270,7 +270,7 @@ BarResult run_bar(const Case& c) {
   const auto& model = sim.system();
   BarResult r;
   r.h = model.grid.h[1];
-  r.unsettled = model.nonlocal.unsettled_steps;
+  r.unsettled = model.nonlocal ? model.nonlocal->unsettled_steps : 0;
   for (const auto& b : model.batches) {
     const auto& states = std::get<StateArray<StrainSoftening>>(b.states);
     const auto& m = std::get<StrainSoftening>(model.materials[b.material]);
@@ -480,7 +480,7 @@ TEST_CASE("nonlocal averages (engine): Gaussian weights over the initial positio
   const Case c = testing::case_from_text("nonlocal_row", s.str());
   auto sim = testing::simulation<2, LinearShape>(c);
   auto& model = sim.system();
-  REQUIRE(model.nonlocal.active);
+  REQUIRE(model.nonlocal.has_value());
   auto& b = model.batches[0];
   const auto& m = std::get<StrainSoftening>(model.materials[0]);
   auto& states = std::get<StateArray<StrainSoftening>>(b.states);

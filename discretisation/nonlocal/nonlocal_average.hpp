@@ -63,7 +63,7 @@ template <int D, class Shape>
 void nonlocal_setup(DiscreteSystem<D, Shape>& system) {
   const double l_max = detail::largest_nonlocal_length(system);
   if (l_max <= 0.0) return;
-  system.nonlocal.active = true;
+  system.nonlocal.emplace();
   for (auto& b : system.batches) {
     if (b.x0.empty()) b.x0 = b.x;
     if (nonlocal_length(system.materials[b.material]) <= 0.0) continue;
@@ -75,14 +75,14 @@ void nonlocal_setup(DiscreteSystem<D, Shape>& system) {
     b.step_start.volume.resize(b.size());
     b.step_start.L.resize(b.size());
   }
-  system.nonlocal.bins = NonlocalBins<D>(system.batches, nonlocal_cutoff * l_max, system.sorts);
+  system.nonlocal->bins = NonlocalBins<D>(system.batches, nonlocal_cutoff * l_max, system.sorts);
   for (auto& b : system.batches) {
     const double l = nonlocal_length(system.materials[b.material]);
     if (l <= 0.0) continue;
     const double cut2 = nonlocal_cutoff * nonlocal_cutoff * l * l;
     for (std::size_t p = 0; p < b.size(); ++p) {
       double sum = 0.0;
-      system.nonlocal.bins.for_each_near(b.x0[p], [&](int qb, std::uint32_t q) {
+      system.nonlocal->bins.for_each_near(b.x0[p], [&](int qb, std::uint32_t q) {
         const auto& bq = system.batches[qb];
         const double r2 = (bq.x0[q] - b.x0[p]).squaredNorm();
         if (r2 < cut2) sum += std::exp(-0.5 * r2 / (l * l)) * detail::initial_volume(bq, q, system.materials);
@@ -96,8 +96,8 @@ void nonlocal_setup(DiscreteSystem<D, Shape>& system) {
 // itself (nonlocal_others), per batch (empty for batches that ask for none).
 template <int D, class Shape>
 void nonlocal_average(DiscreteSystem<D, Shape>& system, std::vector<std::vector<double>>& average) {
-  auto& bins = system.nonlocal.bins;
-  auto& neighbours = system.nonlocal.neighbours;
+  auto& bins = system.nonlocal->bins;
+  auto& neighbours = system.nonlocal->neighbours;
   if (bins.sorts != system.sorts) {  // the particles were re-sorted
     bins = NonlocalBins<D>(system.batches, bins.size, system.sorts);
     neighbours.clear();
