@@ -152,11 +152,11 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
       if (f.body == static_cast<int>(bi)) batch.surface_flux[2 * f.axis + (f.side > 0)] = static_cast<int>(k);
     }
     const bool has_fluxes = std::ranges::any_of(batch.surface_flux, [](int k) { return k >= 0; });
+    batch.x.resize(n);
+    batch.mass.resize(n);
     for (std::size_t p = 0; p < n; ++p) {
-      Vec<D> x;
-      for (int d = 0; d < D; ++d) x[d] = list.position[p][d];
-      batch.x.push_back(x);
-      batch.mass.push_back(rho * list.volume[p]);
+      for (int d = 0; d < D; ++d) batch.x[p][d] = list.position[p][d];
+      batch.mass[p] = rho * list.volume[p];
     }
     // The particles on a face with a surface flux: the body's surface faces
     // with that normal (the first or last lattice layer of a box).
@@ -180,6 +180,7 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
     if (body.initial_stress) {
       if (const auto* g = std::get_if<GeostaticStress>(&*body.initial_stress)) top = detail::body_top(body, list, g->vertical, D);
     }
+    batch.stress.reserve(n);
     for (std::size_t p = 0; p < n; ++p) batch.stress.push_back(detail::initial_stress(body, list, p, rho, top));
     batch.strain.assign(n, Voigt{});
     if (system.heat) {
