@@ -10,13 +10,13 @@
 # surface (the fuzz test's 300 mutated cases, the robustness tests, the
 # command line, sweeps, the output writers) and the engine on 1 and 2
 # threads (determinism) and in its stages (shape functions, the uniaxial
-# benchmark). The whole suite does not fit in CI's time on 2 cores: with
-# the sanitizers the engine's templates compile several times slower, and
-# each physics test compiles them again, so the remaining tests, which run
-# the same stages with other materials and cases, run in the Release build
-# only. -O0: at -O1 the sanitizer build of flowmpm alone took more than 20
-# minutes on 2 cores; at -O0 it and the 8 test programs build in about 10
-# and run in about 8 (measured from a fresh clone).
+# benchmark). The engine's kernels are compiled once, into the engine
+# library (engine/simulation_instances.cpp.in), so more tests cost little
+# to build; running them does: at -O0 with the sanitizers the physics runs
+# tens of times slower, and the remaining tests, which run the same stages
+# with other materials and cases, run in the Release build only.
+# -O0: at -O1 the sanitizer build of flowmpm alone took more than 20
+# minutes on 2 cores. docs/testing.md gives the measured times.
 # MPI is off here: Open MPI keeps its own allocations until exit by design,
 # which LeakSanitizer would report, and test_sweep_mpi runs the sweep code
 # that test_sweep covers. tests/sanitizers/ holds the suppressions, each
