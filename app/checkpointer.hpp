@@ -1,5 +1,5 @@
-// checkpoint.bin in the output directory (README "Checkpoint and
-// restart"): every output.checkpoint_every steps but the last, and when a
+// checkpoint.bin in the output directory
+// (docs/guide/checkpoint_restart.md): every output.checkpoint_every steps but the last, and when a
 // run is interrupted. It holds the case's identity (its digest, name, file
 // and --set options), the simulation's carried state and what each of the
 // run's services carries (`visit_services`), so that a restart continues

@@ -4,7 +4,7 @@
 // an interrupt ends the program at once: one line on stderr, exit status
 // 130. Once a run writes results, or a sweep runs, it holds a
 // FinishBeforeExit, and an interrupt only sets the flag: the run stops after
-// its current step and keeps what it wrote (README "Running a case").
+// its current step and keeps what it wrote (docs/guide/running.md).
 #pragma once
 #include <atomic>
 

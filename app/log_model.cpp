@@ -78,7 +78,7 @@ void log_system(spdlog::logger& log, const Case& c, const Simulation<D, Shape>& 
   for (const auto& load : system.loads.nodal) log.info("load: {}", load.description);
   for (const auto& load : system.loads.body) log.info("load: {}", load.description);
   if (system.damping) {
-    log.info("damping: local alpha {}, viscous c {} 1/s (at t = 0; README \"Damping\")", system.damping->local(0.0),
+    log.info("damping: local alpha {}, viscous c {} 1/s (at t = 0; docs/guide/loads.md)", system.damping->local(0.0),
              system.damping->viscous(0.0));
   }
   for (const auto& body : c.system.bodies) {

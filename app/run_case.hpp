@@ -13,7 +13,7 @@
 namespace flowmpm {
 
 // Whether a run continues from the checkpoint in its output directory
-// (README "Checkpoint and restart").
+// (docs/guide/checkpoint_restart.md).
 enum class Restart {
   no,               // start afresh, replacing an earlier run's checkpoint
   from_checkpoint,  // continue from it; CaseError if there is none or it does not fit

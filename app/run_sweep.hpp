@@ -4,7 +4,7 @@
 // completed with the same base case and overrides. A shard runs only its
 // share of the cases (a scheduler's job array runs the shards) and
 // collect_sweep builds sweep.csv from the cases' folders afterwards. See
-// README.md "Parameter sweeps" and "Sweeps beyond one machine".
+// docs/guide/sweeps.md and docs/guide/cluster.md.
 #pragma once
 #include <atomic>
 #include <memory>

@@ -5,7 +5,7 @@
 // is free. Rank 0 runs cases too, on a thread of its own. Each rank runs its
 // case on its own threads and writes its folder, as a local sweep does, so
 // the output directory must be on a file system every rank sees. See
-// README.md "Sweeps beyond one machine".
+// docs/guide/cluster.md.
 #pragma once
 #include "app/run_sweep.hpp"
 

@@ -2,7 +2,7 @@
 // in its folder that records what it ran and that row. Every way of running
 // a sweep (threads, MPI ranks, scheduler shards) runs a case through
 // run_sweep_case and reads back rows through read_sweep_row, so that they
-// all write the same folders and tables. See README.md "Parameter sweeps".
+// all write the same folders and tables. See docs/guide/sweeps.md.
 #pragma once
 #include <atomic>
 #include <cstddef>

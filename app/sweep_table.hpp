@@ -1,8 +1,8 @@
 // The bookkeeping of a sweep run: which cases are still to run, sweep.csv
 // (rewritten after every finished case, so that an interrupted sweep
 // leaves a valid table) and the progress lines. The same for cases run on
-// threads, on MPI ranks or in a scheduler's shard. See README.md
-// "Parameter sweeps".
+// threads, on MPI ranks or in a scheduler's shard. See
+// docs/guide/sweeps.md.
 #pragma once
 #include <chrono>
 #include <cstddef>

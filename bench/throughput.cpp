@@ -17,7 +17,7 @@
 //     the time loop);
 //   - the cost of one output step (the default fields to a step file), in bytes and
 //     microseconds per particle, apart from the step rate.
-// Output steps are not part of this program (see README, output cost).
+// Output steps are not part of this program (docs/performance.md, output cost).
 // With --transport heat (or both: heat and solvent) the block conducts heat
 // (and diffuses solvent) from its base, held at 400 K (and c = 0.1), and
 // expands with it; the program then reports instead, per size, the rates

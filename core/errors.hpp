@@ -1,5 +1,4 @@
-// The two ways a run can fail, told apart by the exit status (README
-// "Running a case"): bad input (1) and a solution that went wrong (2).
+// The two ways a run can fail, told apart by the exit status (docs/guide/running.md): bad input (1) and a solution that went wrong (2).
 #pragma once
 #include <stdexcept>
 

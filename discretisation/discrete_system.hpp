@@ -44,7 +44,7 @@ struct NodeConstraint {
 // (i) hands the mass, momentum and force it received to its mirror node
 // inside, with the sign of the symmetry, as the image particles would, and
 // (ii) takes its mirror's velocity, reflected. For a symmetric kernel this
-// gives v = V on the plane and keeps second-order accuracy (README).
+// gives v = V on the plane and keeps second-order accuracy (docs/theory/shape_functions.md).
 struct MirrorPlane {
   std::string name;
   std::vector<std::pair<std::size_t, std::size_t>> pairs;  // (ghost, mirror)
@@ -114,7 +114,7 @@ struct WorkDone {
   double gravity = 0.0;    // by gravity and the body forces: sum m g_p . dx
   double boundary = 0.0;   // by the velocity constraints' reactions
   double expansion = 0.0;  // by the expansion strains (thermal, solvent) against the stress
-  double load = 0.0;       // by the tractions, pressures and nodal forces (README "Loads")
+  double load = 0.0;       // by the tractions, pressures and nodal forces (docs/guide/loads.md)
 };
 
 // The nonlocal averages of a system whose models ask for them: the bins of

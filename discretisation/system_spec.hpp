@@ -20,8 +20,7 @@
 
 namespace flowmpm {
 
-// How the particles' velocity is updated from the grid (README "How a step
-// runs"): FLIP adds the grid's velocity change, PIC takes the grid's
+// How the particles' velocity is updated from the grid (docs/theory/step.md): FLIP adds the grid's velocity change, PIC takes the grid's
 // velocity, blend mixes them by flip_fraction.
 enum class VelocityUpdate { flip, pic, blend };
 inline const char* velocity_update_name(VelocityUpdate u) {
@@ -127,7 +126,7 @@ struct SystemSpec {
       if (transport(m.model).diffuses()) return true;
     return false;
   }
-  std::vector<Load> loads;          // README "Loads"
+  std::vector<Load> loads;          // docs/guide/loads.md
   std::optional<Damping> damping;   // quasi-static damping, if any
 };
 

@@ -1,4 +1,4 @@
-// The energy balance of a run (README "Energy balance"):
+// The energy balance of a run (docs/theory/energy_balance.md):
 //   kinetic + stored + dissipated - W_gravity - W_boundary - W_expansion - W_load
 // stays at its initial value, where stored and dissipated are the
 // materials' own (stored_energy, dissipated_energy) plus what damping took

@@ -80,7 +80,7 @@ struct DiffusionStep {
 //   dt <= 1 / (2 kappa sum_d 1 / h_d^2)   (= h^2 / (2 D kappa) on cubic cells),
 // kappa = k / (rho C) for heat and D for solvent, the largest along the
 // material axes in the analysis' plane. A bound, not an estimate (the
-// particle scheme is stable up to 3 times it: README "Stability"), so it
+// particle scheme is stable up to 3 times it: docs/theory/stability.md), so it
 // takes no margin. None when nothing is transported.
 inline std::optional<DiffusionStep> diffusion_time_step(const SystemSpec& spec) {
   double inverse_h2 = 0.0;

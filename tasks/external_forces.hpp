@@ -1,4 +1,4 @@
-// External forces on the grid (README "Loads"), added to the nodal forces
+// External forces on the grid (docs/guide/loads.md), added to the nodal forces
 // at the start of grid_integrate, before the mirror planes fold them, with
 // the loads evaluated at the start of the step:
 //   nodal forces:        f_I += F(t) on each node of the set;
@@ -10,7 +10,7 @@
 // not at the particle's centre; N_I are renormalised over the nodes that
 // carry mass, so that the whole force acts. (CB-Geo mpm maps a particle traction from
 // the particle's centre, which puts part of it a cell inside the body:
-// README "The uniaxial traction benchmark".) Serial, in a fixed order: a
+// docs/validation/uniaxial_traction.md.) Serial, in a fixed order: a
 // scene's loaded faces are few. Body forces enter p2g_force (tasks/p2g.hpp).
 // The loads' work (engine/energy_balance.hpp): a face's force times the
 // displacement of its centre over the step, a nodal force times the

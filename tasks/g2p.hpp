@@ -1,4 +1,4 @@
-// Grid-to-particle stages (README "How a step runs").
+// Grid-to-particle stages (docs/theory/step.md).
 // g2p_motion: v_p <- a (v_p + sum_I N_Ip dv_I) + (1 - a) sum_I N_Ip v_I
 //             (a = 1 FLIP, a = 0 PIC), x_p <- x_p + dt sum_I N_Ip v_I,
 //             with v_I the velocity after grid_integrate.

@@ -1,4 +1,4 @@
-// Grid stages (README "How a step runs"). grid_velocity: v_I = p_I / m_I
+// Grid stages (docs/theory/step.md). grid_velocity: v_I = p_I / m_I
 // (0 on empty nodes), then the prescribed velocities (p_I follows).
 // grid_integrate: the external forces added (tasks/external_forces.hpp),
 // p_I += (f_I + f_d) dt with f_d the damping force if the scene has damping,

@@ -11,7 +11,7 @@
 // not settle: then the last pass stands and the step is counted in
 // DiscreteSystem::nonlocal.unsettled_steps). Taking the neighbours' average
 // from the last step instead lets a band that breaks in a few steps
-// over-dissipate (materials/README.md, strain_softening). Serial, in a fixed
+// over-dissipate (docs/theory/materials.md, strain_softening). Serial, in a fixed
 // order: the same for any thread count.
 #pragma once
 #include <algorithm>

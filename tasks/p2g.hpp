@@ -1,4 +1,4 @@
-// Particle-to-grid stages (README "How a step runs"): p2g_momentum maps mass and momentum,
+// Particle-to-grid stages (docs/theory/step.md): p2g_momentum maps mass and momentum,
 // p2g_force the internal and body forces, to the nodes:
 //   m_I = sum_p N_Ip m_p,  p_I = sum_p N_Ip m_p v_p,
 //   f_I = sum_p ( -V_p sigma_p . dN_Ip + N_Ip m_p g_p ),

@@ -1,4 +1,4 @@
-// The stages of one explicit step (README "How a step runs"). A scheme
+// The stages of one explicit step (docs/theory/step.md). A scheme
 // (engine/schemes.hpp) wires graph nodes, each running one stage or a
 // group of stages in one pass over the particles.
 #pragma once

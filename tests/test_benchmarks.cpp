@@ -1,5 +1,4 @@
-// The classic benchmark cases shipped in configs/benchmarks/ (README
-// "Classic benchmarks"), each run as shipped and its errors against the
+// The classic benchmark cases shipped in configs/benchmarks/ (docs/validation/README.md), each run as shipped and its errors against the
 // closed form asserted, with the measured values and the tolerances'
 // reasons beside them.
 #include <doctest/doctest.h>
@@ -57,7 +56,7 @@ TEST_CASE("CB-Geo uniaxial traction: nodal forces and particle traction both end
   // Measured: largest deviation 1.03e-6 with either (the traction at the
   // particles' faces loads the same two nodes) at t = 1 s; the ramp's
   // residual wave. CB-Geo's particle traction, applied at the particles' centres,
-  // leaves 0.75 Pa in the loaded particles (README).
+  // leaves 0.75 Pa in the loaded particles (docs/validation/README.md).
   CHECK(run_benchmark("uniaxial_traction_nodal").errors.at("stress_max") < 1e-5);
   CHECK(run_benchmark("uniaxial_traction_particle").errors.at("stress_max") < 1e-5);
 }
@@ -85,7 +84,7 @@ TEST_CASE("Sulsky's two disks collide and part, with linear, uGIMP and B-spline 
 TEST_CASE("plate with a hole: Kirsch's stresses near the hole, a / 4") {
   // Measured at cells of a / 4: RMS stress error within 3 a 6.2 %, the
   // particle nearest the hole's edge 4.0 % below Kirsch's 2.59 sigma_0
-  // there (2.49 sigma_0). Floors that refinement does not remove (README):
+  // there (2.49 sigma_0). Floors that refinement does not remove (docs/validation/README.md):
   // the finite plate (1-2 %) and the first particle layer at a free
   // surface.
   const RunSummary s = run_benchmark("plate_with_hole");

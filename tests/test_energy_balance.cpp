@@ -40,7 +40,7 @@ TEST_CASE("a J2 bar pulled past yield dissipates the plastic work of the closed 
   // (eps - sigma_0 / E) and eps_p = (eps - sigma_0 / E) E / (E + H). Per unit
   // cross-section of the 0.1 m bar: plastic work L (sigma_0 eps_p + H eps_p^2
   // / 2), stored L sigma^2 / (2 E). The engine integrates the logarithmic
-  // strain (README "Kinematics"): ln(1 + 2.5e-3) differs from 2.5e-3 by
+  // strain (docs/theory/kinematics.md): ln(1 + 2.5e-3) differs from 2.5e-3 by
   // 0.125 %, so 0.5 % bounds both; measured +0.05 %.
   const double E = 200e9, H = 2e9, s0 = 250e6, L = 0.1, eps = 2.5e-3;
   const double eps_p = (eps - s0 / E) * E / (E + H);

@@ -1,4 +1,4 @@
-// Loads and damping (README "Loads", "Damping"): a block under a suddenly
+// Loads and damping (docs/guide/loads.md, "Damping"): a block under a suddenly
 // applied traction (with damping) and under a ramped one (without) reaches
 // sigma = traction; the reaction balances the load; a body force acts as
 // gravity does; a pressure compresses a free block hydrostatically; the
@@ -112,7 +112,7 @@ TEST_CASE("a slowly ramped traction, without damping, ends as sigma_xx = tractio
 TEST_CASE("the reaction at the held nodes balances the applied traction") {
   // Linear shape functions (no mirror nodes: the held plane's nodes carry
   // the whole reaction), MUSL, local damping. The held set's reaction (the
-  // engine's, as timeseries.csv reports it: README "Output") must balance
+  // engine's, as timeseries.csv reports it: docs/guide/output.md) must balance
   // t H = 1000 Pa x 0.2 m = 200 N/m once the block is at rest: asserted to
   // 1e-3 after 3 s (linear shape functions come to rest more slowly than
   // B-splines: the mean stress is 970 Pa at 0.5 s, 999.4 Pa at 2 s). The

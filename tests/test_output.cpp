@@ -167,8 +167,7 @@ struct H5Reader {
 
   // A scalar variable-length string attribute (what ResultsH5 writes). The
   // object is opened first: H5Aopen_by_name with a path through an external
-  // link reads the string from the wrong file's heap in HDF5 1.10.8 (README
-  // "Results").
+  // link reads the string from the wrong file's heap in HDF5 1.10.8 (docs/guide/output.md).
   std::string string_attribute(const std::string& object, const char* name) const {
     const hid_t opened = H5Oopen(file, object.c_str(), H5P_DEFAULT);
     REQUIRE(opened >= 0);

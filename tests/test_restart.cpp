@@ -1,4 +1,4 @@
-// Checkpoint and restart (README "Checkpoint and restart"): a run that
+// Checkpoint and restart (docs/guide/checkpoint_restart.md): a run that
 // restarts from a checkpoint at step K writes, from K on, the same results
 // as a run that was never stopped, to the last bit. Checked with the
 // program itself (run, --restart, SIGINT, sweeps) on cases with every kind

@@ -110,7 +110,7 @@ TEST_CASE("a rotating square: every row stays its particle and turns with the bo
   CHECK(worst < 0.01 * 0.2);
   // The turn itself: the transfers lose angular momentum (standard MPM;
   // APIC would keep it), so the body lags a rigid quarter turn; measured
-  // 1.44 rad of pi / 2 at 8 cells across (README "Kinematics").
+  // 1.44 rad of pi / 2 at 8 cells across (docs/theory/kinematics.md).
   CAPTURE(angle);
   CHECK(angle > 0.85 * std::numbers::pi / 2);
   CHECK(angle < std::numbers::pi / 2);

@@ -1,4 +1,4 @@
-// Bodies of a scene (README "Bodies"): shapes filled on a lattice, set
+// Bodies of a scene (docs/guide/bodies.md): shapes filled on a lattice, set
 // operations, particles from CSV and HDF5 files, overlapping bodies, and
 // initial stress. Where a feature has an equivalent older form (a box
 // shape and a box body, a file of a body's particles and the body, a

@@ -29,7 +29,7 @@
 //    of 0.6 of the onset): 5 % of G_c, the goal of the regularisation; the
 //    band covers several particles, which share the stress only
 //    approximately while the waves cross it, and their Gaussian weights are
-//    not all 1 (materials/README.md gives the values measured). The local
+//    not all 1 (docs/theory/materials.md gives the values measured). The local
 //    crack band: more than 1.2 G_c, the problem the nonlocal band solves.
 #include <doctest/doctest.h>
 
@@ -227,7 +227,7 @@ namespace {
 // ends (2 L / c), where the pulled ends would load them again.
 // Without the notch the discrete wave fronts (dispersed over a few cells)
 // put the centre's neighbours at the peak stress too, and the damage
-// spreads over 3 to 11 particles (README).
+// spreads over 3 to 11 particles (docs/theory/softening.md).
 std::string bar_case(int N, bool regularised, int particles_per_cell = 1) {
   const double L = 0.1, h = 2 * L / N, c = std::sqrt(M / 2400.0);
   const double v0 = 0.475 * eps_i * std::sqrt(E / M) * c, ramp = 0.2 * L / c;
@@ -553,7 +553,7 @@ TEST_CASE("symmetric bar without a notch: the local crack band dissipates too mu
   // The discrete wave fronts are dispersed over several cells (more at finer
   // grids): where they meet, their sum is flat over several cells, which
   // reach the onset in one step and each soften with a cell's fracture
-  // energy (materials/README.md).
+  // energy (docs/theory/materials.md).
   for (int N : {93, 279}) {
     CAPTURE(N);
     const BarResult r = run_bar(testing::case_from_text("softening_symmetric_local_" + std::to_string(N),
@@ -570,7 +570,7 @@ TEST_CASE("symmetric bar without a notch: the nonlocal band opening dissipates G
   // band that forms at these resolutions). The band covers several
   // particles, all of which break; together they dissipate G_c. 31 cells
   // are too coarse: the band that forms there is as wide as the snap-back
-  // length 2 G_c / (E eps_i^2) = 33 mm (materials/README.md).
+  // length 2 G_c / (E eps_i^2) = 33 mm (docs/theory/materials.md).
   for (int ppc : {1, 2}) {
     for (int N : {45, 93, 279}) {
       CAPTURE(N);

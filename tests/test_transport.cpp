@@ -1,11 +1,11 @@
 // Heat conduction and solvent diffusion on the grid (tasks/transport.hpp) and
 // the expansion strains they drive, against closed forms: the shipped cases
-// of configs/verification/ with their references (README "Verification"),
+// of configs/verification/ with their references (docs/validation/README.md),
 // the explicit diffusion limit, conservation of heat and solvent with
 // surface fluxes, isotropic expansion at a material point, and the case
 // reader's messages for bad transport input.
 //
-// Tolerances (measured values in README "Verification"):
+// Tolerances (measured values in docs/validation/README.md):
 //  - Slab conduction: the lumped-capacity, particle-quadrature conduction
 //    matrix of linear shape functions is the linear finite-element one, and
 //    the particles carry increments (FLIP): second order in space at fixed

@@ -14,10 +14,10 @@
 //    benchmark's published USF and USL values to the digits published: strains
 //    published to 3 significant digits (tolerance 1e-6, half a unit of the
 //    last digit plus the scheme's detail), stresses to 5e-4 Pa (0.05 % of
-//    sigma_yy; see README for where flowmpm and the published code differ).
+//    sigma_yy; see docs/validation/uniaxial_stress.md for where flowmpm and the published code differ).
 //  - MUSL equals USF exactly in this benchmark: with zero initial stress and
 //    no body force, MUSL's stress sequence is USF's with the particle
-//    velocities one update later (README), so they agree to round-off.
+//    velocities one update later (docs/validation/uniaxial_stress.md), so they agree to round-off.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -97,7 +97,7 @@ TEST_CASE("USL matches the published values of cases I-III") {
     CAPTURE(k);
     // The published USL Case I sigma_xx (0.0131) contradicts its own strains:
     // Hooke's law with eps_xx = eps_zz = 0.000201, eps_yy = -0.001 gives
-    // sigma_xx = 0.0014 Pa (README); flowmpm gives 0.0013.
+    // sigma_xx = 0.0014 Pa (docs/validation/uniaxial_stress.md); flowmpm gives 0.0013.
     check_against_published(run(k, "usl"), usl_published[k - 1], k != 1);
   }
   const Result r = run(1, "usl");

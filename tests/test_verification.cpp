@@ -12,11 +12,10 @@
 // Asserted: rate >= 1.8 (resp. >= 0.9) between h = 1/64 and 1/128, where
 // the measured rates are 1.9-2.1 (resp. 0.97; at 1/32 -> 1/64 the MUSL
 // velocity rate is still pre-asymptotic, 1.7); the errors at h = 1/32 within
-// 1.5x of their measured values (README "Verification").
+// 1.5x of their measured values (docs/validation/README.md).
 // The amplitude: v0 = 1e-4 m/s, c = 10 m/s, a strain of 1e-5. The engine
 // integrates the logarithmic strain, which leaves a floor of about 0.2 e
-// = 2e-6 under the error against the small-strain solution (README
-// "Kinematics"), at least 18 times below the errors at the finest grid
+// = 2e-6 under the error against the small-strain solution (docs/theory/kinematics.md), at least 18 times below the errors at the finest grid
 // here (1/128): the rates measured are the discretisation's.
 #include <doctest/doctest.h>
 

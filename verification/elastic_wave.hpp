@@ -11,7 +11,7 @@
 //                first reaches half the amplitude (interpolated in time);
 //   amplitude:   |mean sigma_probe - sigma| / |sigma| over the plateau
 //                [(t_a + t_r) / 2, t_r).
-// Amplitude: with the engine's logarithmic strain (README "Kinematics") the
+// Amplitude: with the engine's logarithmic strain (docs/theory/kinematics.md) the
 // compression front is a shock with plateau stress rho c v0 (1 + e / 4) and
 // speed c (1 + e / 4), e = v0 / c: 2.5e-4 for the shipped e = 1e-3, far
 // below the errors of a few per cent from the front's spread.

@@ -1,5 +1,5 @@
 // The analytical solution a case is measured against, chosen by the `type`
-// of its [reference] table (README "Verification"). Each solution reads and
+// of its [reference] table (docs/validation/README.md). Each solution reads and
 // checks its own keys, may set initial conditions, is sampled during the
 // run, reports named error norms for summary.json and sweeps, may report
 // named measures (quantities without a closed form to compare with, such

@@ -8,7 +8,7 @@
 // Amplitude: no small-strain floor. The loaded face is a grid node at a
 // fixed place, so the material moves with the grid's affine velocity field
 // at the constant rate of deformation v0 / L, and the engine's strain (the
-// time integral of that rate, README "Kinematics") is v0 t / L = eps_a at
+// time integral of that rate, docs/theory/kinematics.md) is v0 t / L = eps_a at
 // any amplitude (the material's stretch is exp(v0 t / L)); the stress of
 // the linear elastic rate form follows it exactly.
 #pragma once

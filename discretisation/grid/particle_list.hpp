@@ -1,5 +1,5 @@
 // Particles given one by one, for geometry made elsewhere (io reads them
-// from a CSV or HDF5 file, README "Particles from a file"): positions,
+// from a CSV or HDF5 file, docs/guide/bodies.md): positions,
 // volumes and, optionally, material axes and initial stress per particle.
 #pragma once
 #include <string>

@@ -1,5 +1,5 @@
 // The registry of loads, chosen by the `type` of a [[loads]] table
-// (README "Case files"). Each load type has
+// (docs/reference/README.md). Each load type has
 //   static constexpr const char* type_name;
 //   static Load read(ParameterTable&, const LoadReadContext&);
 //   template <int D, class Shape> void attach(LoadSite<D, Shape>&) const;

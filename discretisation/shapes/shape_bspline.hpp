@@ -4,7 +4,7 @@
 //   quadratic: N = 3/4 - r^2 (r < 1/2), (3/2 - r)^2 / 2 (1/2 <= r < 3/2)
 //   cubic:     N = 2/3 - r^2 + r^3/2 (r < 1), (2 - r)^3 / 6 (1 <= r < 2)
 // The grid must extend beyond the material: a particle needs all nodes of
-// its stencil (see README, "The grid boundary").
+// its stencil (see docs/theory/shape_functions.md).
 #pragma once
 #include <array>
 

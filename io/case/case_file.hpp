@@ -1,6 +1,6 @@
 // A case file (TOML) read into typed, validated structs. Nothing downstream
 // looks up a string: the run is built from this Case alone. Units are SI
-// throughout (m, s, kg, Pa). See README.md "Case files" for every key.
+// throughout (m, s, kg, Pa). See docs/reference/README.md for every key.
 #pragma once
 #include <cstdint>
 #include <filesystem>

@@ -1,5 +1,4 @@
-// Limits on what a case may ask for beyond each key's own range (README
-// "Case files"): which names and paths are accepted. How many steps a run
+// Limits on what a case may ask for beyond each key's own range (docs/reference/README.md): which names and paths are accepted. How many steps a run
 // may take is the time step's (engine/time_step.hpp: max_steps).
 #pragma once
 #include <string_view>

@@ -4,7 +4,7 @@
 // absurd case cannot overflow the count). read_case rejects a case whose
 // estimate exceeds the memory available (or --max-memory), naming the
 // figure and the keys that drive it, so that neither `check` nor `run`
-// meets std::bad_alloc or an overflowing count. See README "Running a case".
+// meets std::bad_alloc or an overflowing count. See docs/guide/running.md.
 #pragma once
 #include <cstdint>
 #include <optional>

@@ -1,5 +1,5 @@
 // Reads particles made elsewhere from a CSV or an HDF5 file (by the file's
-// extension: .csv, .h5 or .hdf5), README "Particles from a file":
+// extension: .csv, .h5 or .hdf5), docs/guide/bodies.md:
 //   CSV: a header line naming the columns, then one particle per line,
 //        comma-separated; lines starting with # and blank lines skipped.
 //        Columns: x (and y, z up to the dimension) in m, volume in m^3

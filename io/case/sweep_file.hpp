@@ -1,6 +1,6 @@
 // A sweep file (TOML): a base case and the keys to vary over it, expanded
 // into the list of cases to run, each read and validated like a case file
-// with --set overrides. See README.md "Parameter sweeps".
+// with --set overrides. See docs/guide/sweeps.md.
 #pragma once
 #include <filesystem>
 #include <string>

@@ -4,8 +4,8 @@
 // line "flowmpm checkpoint 1\n", then per record its name length (u32),
 // name, value length (u64) and value, then the FNV-1a digest (u64) of all
 // that went before; integers little-endian. The digest tells a damaged file
-// (cut short, overwritten) from a whole one. See README.md "Checkpoint and
-// restart".
+// (cut short, overwritten) from a whole one. See
+// docs/guide/checkpoint_restart.md.
 #pragma once
 #include <filesystem>
 

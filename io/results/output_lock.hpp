@@ -1,4 +1,4 @@
-// One run owns an output directory at a time (README "Results"). A run takes
+// One run owns an output directory at a time (docs/guide/output.md). A run takes
 // the directory's lock before it touches anything in it: the file
 // flowmpm.lock, held with flock(2), which the kernel releases when the
 // process ends in any way (a killed run leaves no lock behind, at most a

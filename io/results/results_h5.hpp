@@ -1,4 +1,4 @@
-// The particle results (README "Results"): one HDF5 file per output step,
+// The particle results (docs/guide/output.md): one HDF5 file per output step,
 // steps/<step as 8 digits>.h5 beside results.h5, holding the particle fields
 // of the snapshot (rows in particle id order) with "time" (s) and "step" as
 // attributes of its root group; and results.h5, the index: the run's

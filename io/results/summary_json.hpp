@@ -43,13 +43,13 @@ struct RunSummary {
   double gravity_work = 0.0, boundary_work = 0.0, expansion_work = 0.0, load_work = 0.0;
   double energy_error = 0.0;
   // With damping: the energy it removed (J, >= 0; per unit thickness in 2D),
-  // part of dissipated_energy (README "Damping").
+  // part of dissipated_energy (docs/guide/loads.md).
   std::optional<double> damping_dissipated;
   std::vector<BodySummary> bodies;
   // Error norms against a reference solution, by name (empty without one).
   std::map<std::string, double> errors;
   // What a reference measures without a closed form to compare with
-  // (README "Verification"), by name; empty without one.
+  // (docs/validation/README.md), by name; empty without one.
   std::map<std::string, double> measures;
 };
 
