@@ -30,8 +30,9 @@ RunServices::RunServices(const Case& c, const RunOptions& options)
   summary.velocity_update = velocity_update_name(c.system.velocity_update);
   summary.dimension = sim->dimension();
   summary.threads = options.threads;
-  summary.particles = sim->size().particles;
-  summary.nodes = sim->size().nodes;
+  const SystemSize size = sim->size();
+  summary.particles = size.particles;
+  summary.nodes = size.nodes;
   summary.dt = c.time_step.fixed_dt();
   summary.end_time = c.time_step.end_time();
 }

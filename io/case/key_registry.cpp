@@ -14,10 +14,11 @@ std::set<std::string>& registry() {
 }  // namespace
 
 std::string key_pattern(std::string_view table_path, std::string_view key) {
+  static const std::regex index(R"(\[\d+\])"), material(R"(^materials\.[^.]+)"), parts(R"((\.parts\[\])+)");
   std::string path(table_path);
-  path = std::regex_replace(path, std::regex(R"(\[\d+\])"), "[]");
-  path = std::regex_replace(path, std::regex(R"(^materials\.[^.]+)"), "materials.<name>");
-  path = std::regex_replace(path, std::regex(R"((\.parts\[\])+)"), "");
+  path = std::regex_replace(path, index, "[]");
+  path = std::regex_replace(path, material, "materials.<name>");
+  path = std::regex_replace(path, parts, "");
   if (path == "materials") return "materials.<name>";  // the table of a material the case names
   return path.empty() ? std::string(key) : path + "." + std::string(key);
 }
