@@ -18,7 +18,8 @@ class EnergyMonitor {
   double error(const Diagnostics& d) {
     const double error = d.energy_balance() - balance_at_start_;
     scale_ = std::max({scale_, d.kinetic_energy + d.stored_energy + d.dissipated_energy, std::abs(d.work.gravity),
-                       std::abs(d.work.boundary), std::abs(d.work.expansion), std::abs(d.work.load)});
+                       std::abs(d.work.boundary), std::abs(d.work.expansion), std::abs(d.work.load),
+                       std::abs(d.work.contact)});
     worst_ = std::max(worst_, std::abs(error));
     return error;
   }

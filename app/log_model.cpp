@@ -3,6 +3,7 @@
 #include <spdlog/spdlog.h>
 
 #include "app/run_case_internal.hpp"
+#include "core/number_text.hpp"
 #include "discretisation/shapes/shape_functions.hpp"
 #include "engine/simulation.hpp"
 #include "io/case/memory_estimate.hpp"
@@ -44,6 +45,12 @@ void log_system(spdlog::logger& log, const Case& c, const Simulation<D, Shape>& 
                system.grid.node_count(), system.blocks.block_count, BlockLayout<D, Shape>::block_cells, D,
                system.blocks.occupied.size());
   for (const auto& b : system.batches) {
+    if (c.system.bodies[b.body].rigid()) {
+      const std::string velocity = axis_functions_text(*c.system.bodies[b.body].rigid_velocity, "m/s");
+      log.info("body '{}': {} particles, rigid, {}", c.system.bodies[b.body].name, b.size(),
+               velocity.empty() ? "at rest" : "velocity " + velocity);
+      continue;
+    }
     const auto& m = c.system.materials[b.material];
     log.info("body '{}': {} particles, material '{}' ({}, density {} kg/m^3, wave speed {:.4g} m/s)",
                  c.system.bodies[b.body].name, b.size(), m.name, type_name(m.model), density(m.model),
@@ -53,6 +60,17 @@ void log_system(spdlog::logger& log, const Case& c, const Simulation<D, Shape>& 
   if (system.nonlocal) {
     log.info("nonlocal averages: over the initial positions (x0 stored), settled with the step's end by "
              "nonlocal_settle");
+  }
+  if (system.contact) {
+    const auto& contact = *system.contact;
+    log.info("contact: {} velocity fields ({} deformable contact bodies, {} rigid, and the grid's for the rest)",
+             contact.fields, contact.deformable_count(), contact.rigid.size());
+    for (const ContactPair& p : contact.pairs) {
+      std::string law = ContactLaws::name_of(p.law);
+      if (const auto* coulomb = std::get_if<CoulombLaw>(&p.law)) law += ", mu " + readable_text(coulomb->friction);
+      log.info("contact '{}': {}, touching where the two volumes fill {} of a node's", p.name, law,
+               readable_text(p.touch_fraction));
+    }
   }
   for (const auto& k : system.constraints) {
     log.info("node set '{}': {} nodes, velocity prescribed along {}", k.name, k.nodes.size(),

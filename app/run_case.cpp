@@ -86,6 +86,7 @@ void finish(RunServices& run, const RunOptions& options, RunStatus status, const
   summary.boundary_work = final_state.work.boundary;
   summary.expansion_work = final_state.work.expansion;
   summary.load_work = final_state.work.load;
+  if (run.sim->in_contact()) summary.contact_work = final_state.work.contact;
   summary.energy_error = run.energy.relative_error();
   if (options.write_results) {
     run.results.finish();
@@ -192,9 +193,11 @@ void log_end(spdlog::logger& log, const RunServices& run) {
   }
   log.info("energy at the end: kinetic {:.6g} J, stored {:.6g} J, dissipated {:.6g} J; work done by gravity "
            "and body forces {:.6g} J, by the constraints {:.6g} J, by the expansion strains {:.6g} J, by the loads "
-           "{:.6g} J; balance error {:.3g} of the largest energy present",
+           "{:.6g} J{}; balance error {:.3g} of the largest energy present",
            summary.kinetic_energy, summary.stored_energy, summary.dissipated_energy, summary.gravity_work,
-           summary.boundary_work, summary.expansion_work, summary.load_work, summary.energy_error);
+           summary.boundary_work, summary.expansion_work, summary.load_work,
+           summary.contact_work ? fmt::format(", by contact {:.6g} J", *summary.contact_work) : "",
+           summary.energy_error);
   const char* type = run.reference.present() ? run.reference.reference().type() : "";
   for (const auto& [name, value] : summary.errors) {
     log.info("error against the {} reference: {} = {:.4g}", type, name, value);

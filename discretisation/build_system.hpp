@@ -9,7 +9,8 @@
 // in 1D. Throws CaseError naming the spec's source and the body, node set
 // or load for what only the built system can tell (a shape with no lattice
 // point, overlapping bodies, a body in the outermost cells, a node set with
-// no node, a load that acts on nothing).
+// no node, a load that acts on nothing). A case with contacts gets its
+// velocity fields (discretisation/contact/build_contact.hpp).
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -23,6 +24,7 @@
 #include "discretisation/nonlocal/nonlocal_average.hpp"
 #include "discretisation/grid/particle_sort.hpp"
 #include "discretisation/bodies/surface_faces.hpp"
+#include "discretisation/contact/build_contact.hpp"
 #include "discretisation/system_spec.hpp"
 
 namespace flowmpm {
@@ -143,7 +145,8 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
     ParticleBatch<D> batch;
     batch.body = static_cast<int>(bi);
     batch.material = body.material;
-    const double rho = density(system.materials[body.material]);
+    // A rigid body's particles carry no mass (contact_fields.hpp).
+    const double rho = body.rigid() ? 0.0 : density(system.materials[body.material]);
     Vec<D> v0;
     for (int d = 0; d < D; ++d) v0[d] = body.velocity[d];
     // The faces of this body's box with a surface flux.
@@ -229,14 +232,16 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
       return states;
     };
     try {
-      batch.states = std::visit(initial_states, system.materials[body.material]);
+      if (!body.rigid()) batch.states = std::visit(initial_states, system.materials[body.material]);
     } catch (const CaseError& e) {
       throw CaseError(spec.source + ": bodies \"" + body.name + "\" (material \"" +
                       spec.materials[body.material].name + "\"): " + e.what());
     }
-    for (const double v : list.volume) lightest = std::min(lightest, rho * v);
+    if (!body.rigid())
+      for (const double v : list.volume) lightest = std::min(lightest, rho * v);
     system.batches.push_back(std::move(batch));
   }
+  if (!spec.contacts.empty()) build_contact(spec, system);
   // A node holding less than a millionth of the least particle capacity
   // only sees the far tail of a shape function: its transport update
   // dt Q / (mC) is noise, and it keeps its value.

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/time_function.hpp"
+#include "discretisation/contact/contact_fields.hpp"
 #include "discretisation/grid/blocks.hpp"
 #include "discretisation/loads/external_loads.hpp"
 #include "discretisation/grid/grid.hpp"
@@ -115,6 +116,11 @@ struct WorkDone {
   double boundary = 0.0;   // by the velocity constraints' reactions
   double expansion = 0.0;  // by the expansion strains (thermal, solvent) against the stress
   double load = 0.0;       // by the tractions, pressures and nodal forces (docs/guide/loads.md)
+  // By contact (tasks/contact.hpp): the impulses of the contact laws times
+  // the mean of each field's velocity before and after them, the rigid
+  // bodies' work included; <= 0 between bodies at rest, friction and
+  // impacts taking energy out.
+  double contact = 0.0;
 };
 
 // The nonlocal averages of a system whose models ask for them: the bins of
@@ -171,10 +177,22 @@ struct DiscreteSystem : SystemScalars {
   // Nonlocal averages: present only when a model asks for them
   // (discretisation/nonlocal/nonlocal_average.hpp, tasks/nonlocal_settle.hpp).
   std::optional<NonlocalAverages<D>> nonlocal;
+  // Contact: present only when the case puts bodies in contact; each such
+  // body then has a velocity field of its own
+  // (discretisation/contact/contact_fields.hpp).
+  std::optional<ContactFields<D>> contact;
 
   StepFlags flags;
 
   std::vector<BlockEnergy> block_energy;  // per block of `blocks`, this step's sums
+
+  // Velocity field k: 0 the grid's, k >= 1 a deformable contact body's.
+  NodalField<D>& field(int k) { return k == 0 ? grid : contact->deformable[k - 1]; }
+  const NodalField<D>& field(int k) const { return k == 0 ? grid : contact->deformable[k - 1]; }
+  // The deformable velocity fields: 1 without contact.
+  int field_count() const { return contact ? 1 + contact->deformable_count() : 1; }
+  // Particles whose velocity is prescribed: a rigid body's (contact).
+  bool is_rigid(const ParticleBatch<D>& b) const { return b.field > 0 && contact->is_rigid(b.field); }
 
   std::size_t particle_count() const {
     std::size_t n = 0;

@@ -11,6 +11,7 @@
 #include "core/time_function.hpp"
 #include "core/vec.hpp"
 #include "discretisation/bodies/body_shape.hpp"
+#include "discretisation/contact/contact_laws.hpp"
 #include "discretisation/loads/external_loads.hpp"
 #include "discretisation/bodies/initial_stress.hpp"
 #include "discretisation/loads/loads.hpp"
@@ -64,6 +65,19 @@ struct BodySpec {
   // the particles, used when the scene conducts heat (diffuses solvent).
   double temperature = 0.0;
   double concentration = 0.0;
+  // A rigid body (contact): its particles move with this velocity (m/s per
+  // axis, absent = 0) and carry no mass, no material and no stress.
+  std::optional<AxisFunctions> rigid_velocity;
+  bool rigid() const { return rigid_velocity.has_value(); }
+};
+
+// Two bodies in contact and the law between them
+// (discretisation/contact/contact_fields.hpp).
+struct ContactSpec {
+  std::string where;          // "file:line: contacts[k]", for messages once the case is read
+  int first = 0, second = 1;  // indices into SystemSpec::bodies; second may be rigid, first not
+  ContactLaw law;
+  double touch_fraction = 0.8;
 };
 
 struct NodeSetSpec {
@@ -113,6 +127,7 @@ struct SystemSpec {
   std::vector<BodySpec> bodies;
   std::vector<NodeSetSpec> node_sets;
   std::vector<SurfaceFluxSpec> surface_fluxes;
+  std::vector<ContactSpec> contacts;  // empty: no contact, one velocity field
 
   // The particles carry a temperature when some material conducts heat, a
   // concentration when some material diffuses solvent; nothing otherwise.

@@ -18,12 +18,17 @@ struct BodyMeans {
   std::array<double, 6> strain{};  // -, volume-weighted mean
 };
 
-// The force a velocity constraint applied on the body along one axis in the
-// last step (NodeConstraint::reaction).
+// A column of the time series after the bodies' means: the force a
+// velocity constraint applied on the body along one axis in the last step
+// (NodeConstraint::reaction; "reaction.<set>.<axis>"), and in a contact
+// scene the contact forces and work (tasks/contact.hpp; `axis` -1 and
+// `name` the whole column name).
 struct Reaction {
-  std::string node_set;
+  std::string name;
   int axis = 0;
-  double force = 0.0;  // N (N/m in 2D, N/m^2 in 1D)
+  double value = 0.0;  // N (N/m in 2D, N/m^2 in 1D), or J for a work
+
+  std::string column() const { return axis < 0 ? name : "reaction." + name + "." + "xyz"[axis]; }
 };
 
 struct Diagnostics {
@@ -39,10 +44,10 @@ struct Diagnostics {
   // scheme's error.
   double energy_balance() const {
     return kinetic_energy + stored_energy + dissipated_energy - work.gravity - work.boundary - work.expansion -
-           work.load;
+           work.load - work.contact;
   }
   std::vector<BodyMeans> bodies;     // per body of the spec
-  std::vector<Reaction> reactions;   // per constrained node set and axis
+  std::vector<Reaction> reactions;   // per constrained node set and axis, then contact
 };
 
 // `body_count`: the spec's bodies (one batch each).
@@ -63,7 +68,9 @@ Diagnostics diagnostics(const DiscreteSystem<D, Shape>& system, std::size_t body
       }
       body_volume[b.body] += b.volume[p];
     }
-    // The material's stored energy per unit volume (its own contract).
+    // The material's stored energy per unit volume (its own contract); a
+    // rigid body has none.
+    if (b.material < 0) continue;
     std::visit(
         [&](const auto& model) {
           using M = std::decay_t<decltype(model)>;
@@ -81,6 +88,20 @@ Diagnostics diagnostics(const DiscreteSystem<D, Shape>& system, std::size_t body
   row.dissipated_energy += system.damping_dissipated;
   row.work = system.work;
   for (const NodeConstraint& c : system.constraints) row.reactions.push_back({c.name, c.axis, c.reaction});
+  if (system.contact) {
+    // Per pair the normal (pressing) and tangential forces on its first
+    // body, per rigid body the force on it per axis and its work, and the
+    // contact's work on the bodies (engine/energy_balance.hpp).
+    for (const ContactPair& p : system.contact->pairs) {
+      row.reactions.push_back({"contact." + p.name + ".normal", -1, p.normal_force});
+      row.reactions.push_back({"contact." + p.name + ".tangential", -1, p.tangential_force});
+    }
+    for (const RigidMotion<D>& r : system.contact->rigid) {
+      for (int d = 0; d < D; ++d) row.reactions.push_back({r.name, d, r.force[d]});
+      row.reactions.push_back({"rigid." + r.name + ".work", -1, r.work});
+    }
+    row.reactions.push_back({"contact_work", -1, system.work.contact});
+  }
   for (std::size_t i = 0; i < body_count; ++i) {
     for (int k = 0; k < 6; ++k) {
       row.bodies[i].stress[k] /= body_volume[i];

@@ -54,7 +54,7 @@ class EnergyBudget {
   // The most kinetic energy allowed after a step with the work `w` done so far.
   double limit(const WorkDone& w) {
     largest_ = std::max(largest_, initial_ + std::abs(w.gravity) + std::abs(w.boundary) + std::abs(w.expansion) +
-                                      std::abs(w.load));
+                                      std::abs(w.load) + std::abs(w.contact));
     return factor_ * (largest_ + floor_);
   }
   double factor() const { return factor_; }

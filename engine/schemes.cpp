@@ -61,6 +61,42 @@ Wiring with_transport(const Wiring& mechanical, TransportBranch branch) {
   throw std::logic_error("the wiring has no g2p stage for the transport branch to join before");
 }
 
+namespace {
+
+// Inserts a node running `stage` right after node `after`: it takes over
+// `after`'s outgoing edges. Returns its index.
+int insert_after(Wiring& w, int after, Stage stage) {
+  const int node = static_cast<int>(w.nodes.size());
+  w.nodes.push_back({stage});
+  for (auto& [from, to] : w.edges)
+    if (from == after) from = node;
+  w.edges.emplace_back(after, node);
+  return node;
+}
+
+bool runs(const StageGroup& g, Stage s) { return std::ranges::find(g, s) != g.end(); }
+
+}  // namespace
+
+Wiring with_contact(const Wiring& wiring) {
+  using enum Stage;
+  Wiring w = wiring;
+  std::vector<int> contact_nodes;
+  const int count = static_cast<int>(wiring.nodes.size());
+  for (int i = 0; i < count; ++i) {
+    if (runs(wiring.nodes[i], grid_integrate)) contact_nodes.push_back(insert_after(w, i, contact_updated));
+    if (!runs(wiring.nodes[i], grid_velocity)) continue;
+    const bool feeds_stress = std::ranges::any_of(wiring.edges, [&](const auto& e) {
+      return e.first == i && runs(wiring.nodes[e.second], g2p_stress);
+    });
+    if (feeds_stress) contact_nodes.push_back(insert_after(w, i, contact_projected));
+  }
+  const int volumes = static_cast<int>(w.nodes.size());
+  w.nodes.push_back({contact_volumes});
+  for (int node : contact_nodes) w.edges.emplace_back(volumes, node);
+  return w;
+}
+
 std::vector<std::string> scheme_names() {
   std::vector<std::string> names;
   for (const Scheme& s : schemes()) names.push_back(s.name);

@@ -42,11 +42,19 @@ enum class TransportBranch {
 // stress update then sees the new temperature and concentration.
 Wiring with_transport(const Wiring& mechanical, TransportBranch branch = TransportBranch::beside);
 
-// The wiring a system runs: the scheme's, with the transport branch only
-// when the scene conducts heat or diffuses solvent.
+// `wiring` with the contact stages (tasks/contact.hpp): contact_updated
+// after each grid_integrate, contact_projected after each grid_velocity
+// whose next node updates the stress (USF; MUSL's second projection), and
+// contact_volumes, with no predecessor, before every contact node.
+Wiring with_contact(const Wiring& wiring);
+
+// The wiring a system runs: the scheme's, with the contact stages only when
+// the scene has contacts, and the transport branch only when it conducts
+// heat or diffuses solvent.
 inline Wiring step_wiring(const Wiring& mechanical, const SystemSpec& spec,
                           TransportBranch branch = TransportBranch::beside) {
-  return spec.conducts_heat() || spec.diffuses_solvent() ? with_transport(mechanical, branch) : mechanical;
+  const Wiring w = spec.contacts.empty() ? mechanical : with_contact(mechanical);
+  return spec.conducts_heat() || spec.diffuses_solvent() ? with_transport(w, branch) : w;
 }
 
 // `wiring` with a nonlocal_settle node right after the node that runs

@@ -51,6 +51,7 @@ class Simulation final : public SimulationBase {
   SystemSize size() const override;
   std::int64_t unsettled_steps() const override { return system_.nonlocal ? system_.nonlocal->unsettled_steps : 0; }
   bool damped() const override { return system_.damping.has_value(); }
+  bool in_contact() const override { return system_.contact.has_value(); }
   void measure_speed() override;
   Diagnostics diagnostics(std::size_t body_count) const override;
   void snapshot_into(ParticleSnapshot& s, const std::vector<std::string>& names) const override;

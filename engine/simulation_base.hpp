@@ -52,6 +52,7 @@ class SimulationBase {
   // Steps whose nonlocal averages did not settle (0 without them).
   virtual std::int64_t unsettled_steps() const = 0;
   virtual bool damped() const = 0;
+  virtual bool in_contact() const = 0;  // bodies in contact: a contact component
 
   // Sets the largest particle speed and the kinetic energy (measured
   // during each step; this measures them outside one, e.g. at the start).

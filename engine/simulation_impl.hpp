@@ -31,7 +31,8 @@ Simulation<D, Shape>::Simulation(const SystemSpec& spec, const Wiring& wiring, d
   // Nodes too light for their stiffness are held only where the stress
   // update sees the updated grid velocity (tasks/grid_update.hpp held_node).
   if constexpr (Shape::gradient_jumps)
-    if (wiring.stress_from_updated_grid()) system_.grid.stiffness.assign(system_.grid.node_count(), 0.0);
+    if (wiring.stress_from_updated_grid())
+      for (int k = 0; k < system_.field_count(); ++k) system_.field(k).stiffness.assign(system_.grid.node_count(), 0.0);
 }
 
 template <int D, class Shape>

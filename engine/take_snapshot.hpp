@@ -53,9 +53,10 @@ inline void put(SnapshotField& f, std::size_t row, std::uint32_t value) {
 template <class State>
 void put(SnapshotField&, std::size_t, const State&) {}
 
-// Fills `f` for the particles of batch `b` (rows at their ids).
+// Fills `f` for the particles of batch `b` (rows at their ids); `material`
+// is null for a rigid body (no model, no state variables).
 template <int D>
-void fill(SnapshotField& f, const ParticleBatch<D>& b, const Material& material) {
+void fill(SnapshotField& f, const ParticleBatch<D>& b, const Material* material) {
   const std::string_view name = f.field.name;
   const auto& id = b.id;
   b.for_each_column([&](const char* column_name, const auto& column) {
@@ -77,6 +78,7 @@ void fill(SnapshotField& f, const ParticleBatch<D>& b, const Material& material)
   } else if (name == "material") {
     for (std::size_t p = 0; p < b.size(); ++p) f.integer[id[p]] = b.material;
   }
+  if (!material) return;
   std::visit(
       [&](const auto& model) {
         using M = std::decay_t<decltype(model)>;
@@ -92,7 +94,7 @@ void fill(SnapshotField& f, const ParticleBatch<D>& b, const Material& material)
           }
         }
       },
-      material);
+      *material);
 }
 
 }  // namespace detail
@@ -118,7 +120,7 @@ void take_snapshot(const DiscreteSystem<D, Shape>& system, const std::vector<std
     } else {
       field.real.assign(s.count * static_cast<std::size_t>(f.components), 0.0);
     }
-    for (const auto& b : system.batches) detail::fill(field, b, system.materials[b.material]);
+    for (const auto& b : system.batches) detail::fill(field, b, b.material < 0 ? nullptr : &system.materials[b.material]);
   }
   s.fields.resize(k);
 }

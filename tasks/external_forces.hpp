@@ -21,6 +21,17 @@
 
 namespace flowmpm {
 
+// The share of a nodal force that velocity field `field` takes at node n:
+// all of it without contact; with contact, each field in proportion to its
+// mass there (bodies sharing a loaded node share its force).
+template <int D, class Shape>
+double nodal_load_share(const DiscreteSystem<D, Shape>& system, int field, std::size_t n) {
+  if (!system.contact) return 1.0;
+  double total = 0.0;
+  for (int k = 0; k < system.field_count(); ++k) total += system.field(k).mass[n];
+  return total > 0.0 ? system.field(field).mass[n] / total : 0.0;
+}
+
 template <int D, class Shape>
 void add_external_forces(DiscreteSystem<D, Shape>& system) {
   auto& grid = system.grid;
@@ -29,7 +40,12 @@ void add_external_forces(DiscreteSystem<D, Shape>& system) {
     for (int d = 0; d < D; ++d) {
       if (!load.force[d]) continue;
       const double f = (*load.force[d])(t);
-      for (const std::size_t n : load.nodes) grid.force[d][n] += f;
+      if (!system.contact) {
+        for (const std::size_t n : load.nodes) grid.force[d][n] += f;
+        continue;
+      }
+      for (int k = 0; k < system.field_count(); ++k)
+        for (const std::size_t n : load.nodes) system.field(k).force[d][n] += f * nodal_load_share(system, k, n);
     }
   }
   for (SurfaceLoad<D>& load : system.loads.surface) {
@@ -38,6 +54,7 @@ void add_external_forces(DiscreteSystem<D, Shape>& system) {
       if (load.traction[d]) traction[d] = (*load.traction[d])(t);
     const double pressure = load.pressure ? (*load.pressure)(t) : 0.0;
     const ParticleBatch<D>& b = system.batches[load.batch];
+    NodalField<D>& field = system.field(b.field);
     for (LoadedFace<D>& face : load.faces) {
       const Vec<D> x = b.x[face.particle] + face.offset;
       face.at = x;
@@ -73,22 +90,23 @@ void add_external_forces(DiscreteSystem<D, Shape>& system) {
       const Stencil<D, Shape, false> s(grid, x, half_width);
       double carried = 0.0;
       for (int a = 0; a < s.size; ++a)
-        if (grid.mass[s.node(a)] > light) carried += s.N(a);
+        if (field.mass[s.node(a)] > light) carried += s.N(a);
       if (carried <= 0.0) continue;
       face.force = force;
       for (int a = 0; a < s.size; ++a) {
-        if (grid.mass[s.node(a)] <= light) continue;
-        for (int d = 0; d < D; ++d) grid.force[d][s.node(a)] += s.N(a) / carried * force[d];
+        if (field.mass[s.node(a)] <= light) continue;
+        for (int d = 0; d < D; ++d) field.force[d][s.node(a)] += s.N(a) / carried * force[d];
       }
     }
   }
 }
 
-// After the grid update (velocities at t and t + dt in velocity_change and
-// momentum / mass): the nodal forces' work over the step, F . (v + v_new) / 2 dt.
+// After the grid update of velocity field `field` (velocities at t and
+// t + dt in velocity_change and momentum / mass): the nodal forces' work
+// over the step, F . (v + v_new) / 2 dt, of the field's share of them.
 template <int D, class Shape>
-void add_nodal_load_work(DiscreteSystem<D, Shape>& system) {
-  const auto& grid = system.grid;
+void add_nodal_load_work(DiscreteSystem<D, Shape>& system, int field) {
+  const NodalField<D>& grid = system.field(field);
   const double t = system.t, dt = system.dt;
   for (const NodalLoad& load : system.loads.nodal) {
     for (int d = 0; d < D; ++d) {
@@ -96,7 +114,8 @@ void add_nodal_load_work(DiscreteSystem<D, Shape>& system) {
       const double f = (*load.force[d])(t);
       for (const std::size_t n : load.nodes) {
         if (grid.mass[n] <= 0.0) continue;
-        system.work.load += f * 0.5 * (grid.velocity_change[d][n] + grid.momentum[d][n] / grid.mass[n]) * dt;
+        system.work.load += f * nodal_load_share(system, field, n) * 0.5 *
+                            (grid.velocity_change[d][n] + grid.momentum[d][n] / grid.mass[n]) * dt;
       }
     }
   }

@@ -164,6 +164,42 @@ void with_stress_update(DiscreteSystem<D, Shape>& system, ParticleBatch<D>& b, F
       system.materials[b.material]);
 }
 
+// Takes `max` up to `value` (max is exact, so any order gives the same).
+inline void raise_to(std::atomic<double>& max, double value) {
+  double seen = max.load(std::memory_order_relaxed);
+  while (value > seen && !max.compare_exchange_weak(seen, value)) {
+  }
+}
+
+// A rigid body's particles [first, last) move with its prescribed velocity
+// at the end of the step, x += V(t + dt) dt (tasks/contact.hpp); a re-sort
+// is due when one leaves [stay_lo, stay_hi] (cells), as in g2p.
+template <int D, class Shape>
+void move_rigid(DiscreteSystem<D, Shape>& system, ParticleBatch<D>& b, std::uint32_t first, std::uint32_t last,
+                const Index<D>& stay_lo, const Index<D>& stay_hi, std::atomic<double>& max_speed_sq) {
+  const ContactFields<D>& contact = *system.contact;
+  const Vec<D> V = contact.rigid[b.field - 1 - contact.deformable_count()].at(system.t + system.dt);
+  const auto& grid = system.grid;
+  bool stays = true;
+  for (std::uint32_t p = first; p < last; ++p) {
+    const Vec<D> x_new = b.x[p] + system.dt * V;
+    for (int d = 0; d < D; ++d) {
+      const double g = grid.coordinate(x_new, d);
+      if (!(g >= Shape::reach_below && g < grid.cells[d] - Shape::reach_above + 1)) {
+        system.flags.fail("a particle of a rigid body at " + position_text<D>(b.x[p]) + " would move to " +
+                          position_text<D>(x_new) + ", outside the grid");
+        return;
+      }
+      const int c = floor_nonnegative(g);
+      stays = stays && c >= stay_lo[d] && c <= stay_hi[d];
+    }
+    b.v[p] = V;
+    b.x[p] = x_new;
+  }
+  raise_to(max_speed_sq, V.squaredNorm());
+  if (!stays) system.flags.resort_needed.store(true, std::memory_order_relaxed);
+}
+
 // One pass over the particles: g2p_motion, g2p_stress, or both (USL), from
 // one stencil per particle at its position at the start of the pass.
 template <int D, class Shape, bool Motion, bool Stress>
@@ -176,15 +212,19 @@ void g2p(DiscreteSystem<D, Shape>& system) {
   std::atomic<double> max_speed_sq{0.0};
   // Grid coordinates where a particle's stencil has nodes: [g_lo, g_hi).
   Vec<D> g_lo, g_hi;
-  const double* velocity[D];
-  const double* velocity_change[D];
   for (int d = 0; d < D; ++d) {
     g_lo[d] = Shape::reach_below;
     g_hi[d] = grid.cells[d] - Shape::reach_above + 1;
-    velocity[d] = grid.velocity[d].data();
-    velocity_change[d] = grid.velocity_change[d].data();
   }
   gather_by_block(system, [&](ParticleBatch<D>& b, std::uint32_t first, std::uint32_t last, std::uint32_t block) {
+    // The batch's velocity field.
+    const NodalField<D>& field = system.field(b.field);
+    const double* velocity[D];
+    const double* velocity_change[D];
+    for (int d = 0; d < D; ++d) {
+      velocity[d] = field.velocity[d].data();
+      velocity_change[d] = field.velocity_change[d].data();
+    }
     // The cells the block's particles may reach before a re-sort is due:
     // fewer than drift_limit cells outside the block, per axis.
     const Index<D> bc = system.blocks.block_coords(block);
@@ -192,6 +232,10 @@ void g2p(DiscreteSystem<D, Shape>& system) {
     for (int d = 0; d < D; ++d) {
       stay_lo[d] = bc[d] * Layout::block_cells - Layout::drift_limit + 1;
       stay_hi[d] = bc[d] * Layout::block_cells + Layout::block_cells - 2 + Layout::drift_limit;
+    }
+    if (system.is_rigid(b)) {
+      if constexpr (Motion) move_rigid<D, Shape>(system, b, first, last, stay_lo, stay_hi, max_speed_sq);
+      return;
     }
     double block_max_sq = 0.0;
     BlockEnergy energy;  // this segment's sums
@@ -271,9 +315,7 @@ void g2p(DiscreteSystem<D, Shape>& system) {
       sums.gravity_work += energy.gravity_work;
     }
     if constexpr (Stress) sums.expansion_work += energy.expansion_work;
-    double seen = max_speed_sq.load(std::memory_order_relaxed);
-    while (block_max_sq > seen && !max_speed_sq.compare_exchange_weak(seen, block_max_sq)) {
-    }
+    raise_to(max_speed_sq, block_max_sq);
   });
   if constexpr (Motion) system.max_speed_sq = max_speed_sq.load();
 }

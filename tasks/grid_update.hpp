@@ -14,9 +14,9 @@
 
 namespace flowmpm {
 
+// On one velocity field (every field of a contact scene holds them).
 template <int D, class Shape>
-void apply_velocity_constraints(DiscreteSystem<D, Shape>& system, double time) {
-  auto& grid = system.grid;
+void apply_velocity_constraints(DiscreteSystem<D, Shape>& system, NodalField<D>& grid, double time) {
   for (const NodeConstraint& c : system.constraints) {
     const double value = c.velocity(time);
     for (std::size_t n : c.nodes) {
@@ -41,8 +41,8 @@ void apply_velocity_constraints(DiscreteSystem<D, Shape>& system, double time) {
 // Hands what the ghost nodes received to their mirror nodes (MirrorPlane):
 // `field` is momentum or force, `mass` too for the former.
 template <int D, class Shape>
-void fold_mirror_planes(DiscreteSystem<D, Shape>& system, typename Grid<D>::VectorField& field, bool with_mass) {
-  auto& grid = system.grid;
+void fold_mirror_planes(DiscreteSystem<D, Shape>& system, NodalField<D>& grid, typename NodalField<D>::VectorField& field,
+                        bool with_mass) {
   for (const MirrorPlane& plane : system.mirror_planes) {
     for (auto [ghost, mirror] : plane.pairs) {
       if (with_mass) grid.mass[mirror] += grid.mass[ghost];
@@ -64,20 +64,22 @@ void fold_mirror_planes(DiscreteSystem<D, Shape>& system, typename Grid<D>::Vect
 // constrained nodes, in their order: deterministic.
 template <int D, class Shape>
 void measure_reactions(DiscreteSystem<D, Shape>& system) {
-  const auto& grid = system.grid;
   const double dt = system.dt;
   for (NodeConstraint& c : system.constraints) {
     const int a = c.axis;
-    const auto impulse = [&](std::size_t n, double mass, double force) {
-      return mass * grid.velocity_change[a][n] - force * dt;
-    };
     double J = 0.0;
-    for (std::size_t n : c.nodes) J += impulse(n, grid.mass[n], grid.force[a][n]);
-    if (c.mirror_plane >= 0) {
-      // Along a constrained axis the fold is antisymmetric: f_mirror += -f_ghost.
-      for (auto [ghost, mirror] : system.mirror_planes[c.mirror_plane].pairs) {
-        J += impulse(ghost, grid.mass[ghost], grid.force[a][ghost]);
-        J += impulse(mirror, grid.mass[mirror] - grid.mass[ghost], grid.force[a][mirror] + grid.force[a][ghost]);
+    for (int k = 0; k < system.field_count(); ++k) {
+      const NodalField<D>& grid = system.field(k);
+      const auto impulse = [&](std::size_t n, double mass, double force) {
+        return mass * grid.velocity_change[a][n] - force * dt;
+      };
+      for (std::size_t n : c.nodes) J += impulse(n, grid.mass[n], grid.force[a][n]);
+      if (c.mirror_plane >= 0) {
+        // Along a constrained axis the fold is antisymmetric: f_mirror += -f_ghost.
+        for (auto [ghost, mirror] : system.mirror_planes[c.mirror_plane].pairs) {
+          J += impulse(ghost, grid.mass[ghost], grid.force[a][ghost]);
+          J += impulse(mirror, grid.mass[mirror] - grid.mass[ghost], grid.force[a][mirror] + grid.force[a][ghost]);
+        }
       }
     }
     c.reaction = J / dt;
@@ -87,15 +89,17 @@ void measure_reactions(DiscreteSystem<D, Shape>& system) {
 
 template <int D, class Shape>
 void grid_velocity(DiscreteSystem<D, Shape>& system) {
-  auto& grid = system.grid;
-  fold_mirror_planes(system, grid.momentum, true);
-  for_each_active_node(grid, [&](std::size_t n, const Index<D>&) {
-    // p / m is a mean of particle velocities, however light the node: a node
-    // left at v = 0 would strain a rigidly moving body, (0 - v) dN dt.
-    const double m = grid.mass[n];
-    for (int d = 0; d < D; ++d) grid.velocity[d][n] = m > 0.0 ? grid.momentum[d][n] / m : 0.0;
-  });
-  apply_velocity_constraints(system, system.t);
+  for (int k = 0; k < system.field_count(); ++k) {
+    NodalField<D>& field = system.field(k);
+    fold_mirror_planes(system, field, field.momentum, true);
+    for_each_active_node(system.grid, [&](std::size_t n, const Index<D>&) {
+      // p / m is a mean of particle velocities, however light the node: a node
+      // left at v = 0 would strain a rigidly moving body, (0 - v) dN dt.
+      const double m = field.mass[n];
+      for (int d = 0; d < D; ++d) field.velocity[d][n] = m > 0.0 ? field.momentum[d][n] / m : 0.0;
+    });
+    apply_velocity_constraints(system, field, system.t);
+  }
 }
 
 // A node too light for its stiffness: its own frequency sqrt(k_I / m_I),
@@ -110,7 +114,7 @@ void grid_velocity(DiscreteSystem<D, Shape>& system) {
 // gives its particles the whole increment f_I dt / m_I (N_Ip f_I dt / m_I
 // is bounded), so that momentum is kept.
 template <int D, class Shape>
-bool held_node(const Grid<D>& grid, std::size_t n, double dt) {
+bool held_node(const NodalField<D>& grid, std::size_t n, double dt) {
   if constexpr (Shape::gradient_jumps)
     return !grid.stiffness.empty() && grid.mass[n] > 0.0 && grid.stiffness[n] * dt * dt > grid.mass[n];
   return false;
@@ -123,15 +127,15 @@ bool held_node(const Grid<D>& grid, std::size_t n, double dt) {
 // v_I^new = p_I / m_I (a held node's too), is the damping's share of the
 // grid's kinetic energy change; it is summed per slab of nodes and then over
 // the slabs in order, so the sum does not depend on the thread count.
+// Returns the power (W).
 template <int D, class Shape>
-void integrate_damped(DiscreteSystem<D, Shape>& system) {
-  auto& grid = system.grid;
+double integrate_damped(DiscreteSystem<D, Shape>& system, NodalField<D>& grid) {
   const Damping& damping = *system.damping;
   const double dt = system.dt;
   const double alpha = damping.local(system.t), c = damping.viscous(system.t);
-  const int first_slab = grid.active_lo[D - 1];
-  std::vector<double> slab_power(static_cast<std::size_t>(grid.active_hi[D - 1] - first_slab + 1), 0.0);
-  for_each_active_node(grid, [&](std::size_t n, const Index<D>& ijk) {
+  const int first_slab = system.grid.active_lo[D - 1];
+  std::vector<double> slab_power(static_cast<std::size_t>(system.grid.active_hi[D - 1] - first_slab + 1), 0.0);
+  for_each_active_node(system.grid, [&](std::size_t n, const Index<D>& ijk) {
     const double m = grid.mass[n];
     const bool held = held_node<D, Shape>(grid, n, dt);
     double power = 0.0;
@@ -151,42 +155,57 @@ void integrate_damped(DiscreteSystem<D, Shape>& system) {
     }
     slab_power[static_cast<std::size_t>(ijk[D - 1] - first_slab)] += power;
   });
-  system.damping_power = 0.0;
-  for (const double p : slab_power) system.damping_power += p;
-  system.damping_dissipated -= system.damping_power * dt;
+  double power = 0.0;
+  for (const double p : slab_power) power += p;
+  return power;
 }
 
 template <int D, class Shape>
 void grid_integrate(DiscreteSystem<D, Shape>& system) {
-  auto& grid = system.grid;
   const double dt = system.dt;
   add_external_forces(system);
-  fold_mirror_planes(system, grid.force, false);
-  if (system.damping) {
-    integrate_damped(system);
-  } else {
-    for_each_active_node(grid, [&](std::size_t n, const Index<D>&) {
-      const double m = grid.mass[n];
+  // In a contact scene, a contact stage may have corrected the velocities
+  // the stress update read (tasks/contact.hpp contact_projected): the
+  // velocity change of FLIP counts from the projected momentum instead.
+  const bool from_momentum = system.contact.has_value();
+  if (system.damping) system.damping_power = 0.0;
+  for (int k = 0; k < system.field_count(); ++k) {
+    NodalField<D>& grid = system.field(k);
+    fold_mirror_planes(system, grid, grid.force, false);
+    if (system.damping) {
+      if (from_momentum) {
+        for_each_active_node(system.grid, [&](std::size_t n, const Index<D>&) {
+          for (int d = 0; d < D; ++d)
+            if (grid.mass[n] > 0.0) grid.velocity[d][n] = grid.momentum[d][n] / grid.mass[n];
+        });
+      }
+      system.damping_power += integrate_damped(system, grid);
+    } else {
+      for_each_active_node(system.grid, [&](std::size_t n, const Index<D>&) {
+        const double m = grid.mass[n];
+        const bool held = held_node<D, Shape>(grid, n, dt);
+        for (int d = 0; d < D; ++d) {
+          // v_I before the update
+          grid.velocity_change[d][n] = from_momentum && m > 0.0 ? grid.momentum[d][n] / m : grid.velocity[d][n];
+          if (m > 0.0) {
+            grid.momentum[d][n] += grid.force[d][n] * dt;
+            if (!held) grid.velocity[d][n] = grid.momentum[d][n] / m;
+          }
+        }
+      });
+    }
+    apply_velocity_constraints(system, grid, system.t + dt);
+    add_nodal_load_work(system, k);
+    // dv_I for FLIP; a held node's is that of its momentum.
+    for_each_active_node(system.grid, [&](std::size_t n, const Index<D>&) {
       const bool held = held_node<D, Shape>(grid, n, dt);
       for (int d = 0; d < D; ++d) {
-        grid.velocity_change[d][n] = grid.velocity[d][n];  // v_I before the update
-        if (m > 0.0) {
-          grid.momentum[d][n] += grid.force[d][n] * dt;
-          if (!held) grid.velocity[d][n] = grid.momentum[d][n] / m;
-        }
+        const double v_new = held ? grid.momentum[d][n] / grid.mass[n] : grid.velocity[d][n];
+        grid.velocity_change[d][n] = v_new - grid.velocity_change[d][n];
       }
     });
   }
-  apply_velocity_constraints(system, system.t + dt);
-  add_nodal_load_work(system);
-  // dv_I for FLIP; a held node's is that of its momentum.
-  for_each_active_node(grid, [&](std::size_t n, const Index<D>&) {
-    const bool held = held_node<D, Shape>(grid, n, dt);
-    for (int d = 0; d < D; ++d) {
-      const double v_new = held ? grid.momentum[d][n] / grid.mass[n] : grid.velocity[d][n];
-      grid.velocity_change[d][n] = v_new - grid.velocity_change[d][n];
-    }
-  });
+  if (system.damping) system.damping_dissipated -= system.damping_power * dt;
   measure_reactions(system);
 }
 

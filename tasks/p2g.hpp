@@ -32,39 +32,38 @@ void set_accelerations(DiscreteSystem<D, Shape>& system) {
 template <int D, class Shape, bool Momentum, bool Force, bool Stiffness = false>
 void p2g(DiscreteSystem<D, Shape>& system) {
   auto& grid = system.grid;
-  for_each_active_node(grid, [&](std::size_t n, const Index<D>&) {
-    if constexpr (Momentum) grid.mass[n] = 0.0;
-    for (int d = 0; d < D; ++d) {
-      if constexpr (Momentum) grid.momentum[d][n] = 0.0;
-      if constexpr (Force) grid.force[d][n] = 0.0;
-    }
-    if constexpr (Stiffness) grid.stiffness[n] = 0.0;
-  });
+  for (int k = 0; k < system.field_count(); ++k) {
+    NodalField<D>& field = system.field(k);
+    for_each_active_node(grid, [&](std::size_t n, const Index<D>&) {
+      if constexpr (Momentum) field.mass[n] = 0.0;
+      for (int d = 0; d < D; ++d) {
+        if constexpr (Momentum) field.momentum[d][n] = 0.0;
+        if constexpr (Force) field.force[d][n] = 0.0;
+      }
+      if constexpr (Stiffness) field.stiffness[n] = 0.0;
+    });
+  }
   if constexpr (Force) set_accelerations(system);
   // P-wave modulus rho c^2 of each material, for the nodal stiffness.
   std::vector<double> modulus;
   if constexpr (Stiffness)
     for (const Material& m : system.materials) modulus.push_back(density(m) * wave_speed(m) * wave_speed(m));
-  double* stiffness = grid.stiffness.data();
-  double* mass = grid.mass.data();
-  double* momentum[D];
-  double* force[D];
-  for (int d = 0; d < D; ++d) {
-    momentum[d] = grid.momentum[d].data();
-    force[d] = grid.force[d].data();
-  }
   scatter_by_colour(system, [&](ParticleBatch<D>& b, std::uint32_t first, std::uint32_t last, std::uint32_t) {
-    // The nodal arrays as locals of this task: store_nodes writes through
-    // memcpy, which may alias any memory, so pointers read through the
-    // lambda's captures were loaded again at every node pair (about 20
-    // instructions per particle-step with linear shape functions in 3D).
-    double* const to_mass = mass;
-    double* const to_stiffness = stiffness;
+    // A rigid body's particles map only their volume (tasks/contact.hpp).
+    if (system.is_rigid(b)) return;
+    // The nodal arrays of the batch's field as locals of this task:
+    // store_nodes writes through memcpy, which may alias any memory, so
+    // pointers read through the lambda's captures were loaded again at
+    // every node pair (about 20 instructions per particle-step with linear
+    // shape functions in 3D).
+    NodalField<D>& field = system.field(b.field);
+    double* const to_mass = field.mass.data();
+    double* const to_stiffness = field.stiffness.data();
     double* to_momentum[D];
     double* to_force[D];
     for (int d = 0; d < D; ++d) {
-      to_momentum[d] = momentum[d];
-      to_force[d] = force[d];
+      to_momentum[d] = field.momentum[d].data();
+      to_force[d] = field.force[d].data();
     }
     const Vec<D> g = b.acceleration;
     for (std::uint32_t p = first; p < last; ++p) {
@@ -108,7 +107,7 @@ void p2g(DiscreteSystem<D, Shape>& system) {
 // with linear shape functions).
 template <int D, class Shape, bool Momentum>
 void p2g_with_force(DiscreteSystem<D, Shape>& system) {
-  if (Shape::gradient_jumps && !system.grid.stiffness.empty()) {
+  if (Shape::gradient_jumps && !system.grid.stiffness.empty()) {  // every field has it then
     p2g<D, Shape, Momentum, true, Shape::gradient_jumps>(system);
   } else {
     p2g<D, Shape, Momentum, true>(system);

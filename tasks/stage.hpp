@@ -24,11 +24,16 @@ enum class Stage {
   transport_update,
   transport_g2p,
   nonlocal_settle,
+  // Contact (tasks/contact.hpp), only in scenes with contacts.
+  contact_volumes,
+  contact_projected,
+  contact_updated,
 };
 
-inline constexpr std::array<const char*, 12> stage_names = {
-    "p2g_momentum",  "p2g_force",      "grid_velocity",    "grid_integrate", "g2p_motion",     "g2p_stress",
-    "remap",         "transport_p2g",  "transport_flux",   "transport_update", "transport_g2p", "nonlocal_settle"};
+inline constexpr std::array<const char*, 15> stage_names = {
+    "p2g_momentum",    "p2g_force",       "grid_velocity",     "grid_integrate", "g2p_motion",
+    "g2p_stress",      "remap",           "transport_p2g",     "transport_flux", "transport_update",
+    "transport_g2p",   "nonlocal_settle", "contact_volumes",   "contact_projected", "contact_updated"};
 
 inline const char* stage_name(Stage s) { return stage_names[static_cast<std::size_t>(s)]; }
 
@@ -47,17 +52,19 @@ inline constexpr unsigned grid_transport = 1u << 7;      // nodal heat and solve
 inline constexpr unsigned reaction_sums = 1u << 8;       // the constraints' reactions and work, load work, damping power
 inline constexpr unsigned step_sums = 1u << 9;           // block energies, the largest particle speed
 inline constexpr unsigned nonlocal_tables = 1u << 10;    // the nonlocal neighbours and their weights
+inline constexpr unsigned contact_volumes = 1u << 11;    // the contact fields' nodal volumes and their gradients
 }  // namespace stage_data
-inline constexpr std::array<const char*, 11> stage_data_names = {
+inline constexpr std::array<const char*, 12> stage_data_names = {
     "particle_motion", "particle_volume", "particle_stress", "particle_transport", "grid_momentum", "grid_force",
-    "grid_velocity",   "grid_transport",  "reaction_sums",   "step_sums",          "nonlocal_tables"};
+    "grid_velocity",   "grid_transport",  "reaction_sums",   "step_sums",          "nonlocal_tables", "contact_volumes"};
 
 struct StageAccess {
   unsigned reads = 0, writes = 0;  // stage_data bits
 };
 
 // Each stage's access, from its kernel (tasks/p2g.hpp, grid_update.hpp,
-// g2p.hpp, transport.hpp, nonlocal_settle.hpp). A new stage states its own.
+// g2p.hpp, transport.hpp, nonlocal_settle.hpp, contact.hpp). A new stage
+// states its own.
 inline StageAccess stage_access(Stage s) {
   using namespace stage_data;
   switch (s) {
@@ -76,6 +83,10 @@ inline StageAccess stage_access(Stage s) {
     case Stage::transport_update: return {grid_transport, grid_transport};
     case Stage::transport_g2p: return {particle_motion | grid_transport, particle_transport};
     case Stage::nonlocal_settle: return {particle_motion | particle_stress, particle_stress | nonlocal_tables};
+    case Stage::contact_volumes: return {particle_motion | particle_volume, contact_volumes};
+    case Stage::contact_projected: return {grid_momentum | grid_velocity | contact_volumes, grid_velocity};
+    case Stage::contact_updated:
+      return {grid_momentum | grid_force | grid_velocity | contact_volumes, grid_momentum | grid_velocity | reaction_sums};
   }
   return {};
 }

@@ -7,6 +7,7 @@
 #pragma once
 #include <stdexcept>
 
+#include "tasks/contact.hpp"
 #include "tasks/g2p.hpp"
 #include "tasks/grid_update.hpp"
 #include "tasks/nonlocal_settle.hpp"
@@ -42,6 +43,9 @@ StagePass<D, Shape> stage_pass(const StageGroup& group) {
       {{Stage::transport_update}, &transport_update<D, Shape>},
       {{Stage::transport_g2p}, &transport_g2p<D, Shape>},
       {{Stage::nonlocal_settle}, &nonlocal_settle<D, Shape>},
+      {{Stage::contact_volumes}, &contact_volumes<D, Shape>},
+      {{Stage::contact_projected}, &contact_projected<D, Shape>},
+      {{Stage::contact_updated}, &contact_updated<D, Shape>},
   };
   for (const Entry& e : table)
     if (e.stages == group) return e.pass;

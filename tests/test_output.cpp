@@ -473,7 +473,7 @@ TEST_CASE("timeseries CSV: header, and rows that parse back exactly") {
   }
   row.bodies = {block, ground};
   row.reactions = {{"base", 1, 12.5 / 3.0}, {"top", 0, -1e-300}};
-  CHECK(reaction_names(row) == std::vector<std::string>{"base.y", "top.x"});
+  CHECK(reaction_names(row) == std::vector<std::string>{"reaction.base.y", "reaction.top.x"});
   {
     TimeseriesCsv csv(path, {"block", "ground"}, reaction_names(row));
     csv.write(row, balance_error);
@@ -503,7 +503,7 @@ TEST_CASE("timeseries CSV: header, and rows that parse back exactly") {
       expected.insert(expected.end(), body.stress.begin(), body.stress.end());
       expected.insert(expected.end(), body.strain.begin(), body.strain.end());
     }
-    for (const Reaction& r : row.reactions) expected.push_back(r.force);
+    for (const Reaction& r : row.reactions) expected.push_back(r.value);
     for (std::size_t i = 1; i < cells.size(); ++i) {
       CAPTURE(header[i]);
       CHECK(std::strtod(cells[i].c_str(), nullptr) == expected[i - 1]);

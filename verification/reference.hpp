@@ -19,6 +19,7 @@
 #include "verification/column_self_weight.hpp"
 #include "verification/elastic_impact.hpp"
 #include "verification/elastic_wave.hpp"
+#include "verification/incline.hpp"
 #include "verification/plate_with_hole.hpp"
 #include "verification/slab_transport.hpp"
 #include "verification/swelling_bending.hpp"
@@ -34,7 +35,7 @@ namespace flowmpm {
 using ReferenceSolution =
     std::variant<AxialVibration, ElasticWave, UniaxialStress, ColumnSelfWeight, SlabTransport, ThermalStress,
                  SwellingSlab, SwellingBending, UniformStressReference, PlateWithHole, ThickCylinder, Cantilever,
-                 ElasticImpact, TaylorImpact>;
+                 ElasticImpact, TaylorImpact, Incline>;
 using ReferenceSolutions = Registry<ReferenceSolution>;
 
 class Reference {

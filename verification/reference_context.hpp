@@ -20,6 +20,7 @@ struct ReferenceContext {
 // are those of linear elasticity.
 inline const LinearElastic& elastic_material(ParameterTable& t, const ReferenceContext& context) {
   const SystemSpec& s = context.system;
+  if (s.bodies.at(0).rigid()) t.fail("type", "a case whose first body is not rigid (the solution is elastic)");
   const LinearElastic* m = std::get_if<LinearElastic>(&s.materials.at(s.bodies.at(0).material).model);
   if (!m) t.fail("type", "a case whose first body is linear_elastic (the analytical solution is elastic)");
   return *m;

@@ -37,7 +37,7 @@ struct TaylorImpact {
   static TaylorImpact read(ParameterTable& t, const ReferenceContext& context) {
     const SystemSpec& s = context.system;
     TaylorImpact r;
-    const auto* m = std::get_if<VonMises>(&s.materials.at(s.bodies.at(0).material).model);
+    const auto* m = s.bodies.at(0).rigid() ? nullptr : std::get_if<VonMises>(&s.materials.at(s.bodies.at(0).material).model);
     if (!m) t.fail("type", "a case whose first body is von_mises for taylor_impact");
     r.material = m->parameters;
     r.axis = read_axis(t, "axis", s.dimension);

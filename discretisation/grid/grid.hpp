@@ -26,14 +26,10 @@ struct TransportNodes {
   }
 };
 
+// The nodal fields of one velocity field: all the bodies of a scene
+// without contact, or one contact field (discretisation/contact/).
 template <int D>
-struct Grid {
-  Vec<D> origin = Vec<D>::Zero();
-  Vec<D> h = Vec<D>::Ones();      // cell size per axis (m)
-  Vec<D> inv_h = Vec<D>::Ones();
-  Index<D> cells{};               // cell count per axis
-  Index<D> nodes{};               // cells + 1
-
+struct NodalField {
   // A nodal vector field, one array per component (component d of node n
   // is field[d][n]): the nodes of a stencil line along x are neighbours in
   // memory, so the compiler can load and add two of them at once.
@@ -47,6 +43,23 @@ struct Grid {
   // stiffness, for shape functions whose gradient jumps (held_node in
   // tasks/grid_update.hpp); empty for the others.
   std::vector<double> stiffness;
+
+  void allocate(std::size_t nodes) {
+    mass.assign(nodes, 0.0);
+    for (VectorField* field : {&momentum, &force, &velocity, &velocity_change})
+      for (auto& component : *field) component.assign(nodes, 0.0);
+  }
+};
+
+template <int D>
+struct Grid : NodalField<D> {  // the scene's first (often only) velocity field
+  Vec<D> origin = Vec<D>::Zero();
+  Vec<D> h = Vec<D>::Ones();      // cell size per axis (m)
+  Vec<D> inv_h = Vec<D>::Ones();
+  Index<D> cells{};               // cell count per axis
+  Index<D> nodes{};               // cells + 1
+
+  using typename NodalField<D>::VectorField;
   // Transport fields, empty unless the scene conducts heat / diffuses solvent.
   TransportNodes heat, solvent;
 
@@ -64,12 +77,10 @@ struct Grid {
       active_lo[d] = 0;
       active_hi[d] = cells[d];
     }
-    mass.assign(n, 0.0);
-    for (VectorField* field : {&momentum, &force, &velocity, &velocity_change})
-      for (auto& component : *field) component.assign(n, 0.0);
+    this->allocate(n);
   }
 
-  std::size_t node_count() const { return mass.size(); }
+  std::size_t node_count() const { return this->mass.size(); }
 
   [[gnu::always_inline]] std::size_t node_index(const Index<D>& i) const {
     std::size_t index = static_cast<std::size_t>(i[D - 1]);

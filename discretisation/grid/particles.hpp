@@ -39,7 +39,10 @@ struct StepStart {
 template <int D>
 struct ParticleBatch {
   int body = 0;      // index into SystemSpec::bodies
-  int material = 0;  // index into SystemSpec::materials
+  int material = 0;  // index into SystemSpec::materials (none, -1, for a rigid body)
+  // Its velocity field: 0 the grid's, k >= 1 a contact field
+  // (discretisation/contact/contact_fields.hpp).
+  int field = 0;
   double particle_length = 0.0;  // initial particle size (m), see MaterialInput::length
   Vec<D> half_width = Vec<D>::Zero();  // initial half-width per axis, in cells (uGIMP)
   // Body force per unit mass on these particles during the step: gravity

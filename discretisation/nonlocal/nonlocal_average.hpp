@@ -35,7 +35,7 @@ inline constexpr double nonlocal_cutoff = 4.0;
 // Whether a model of a body of `spec` asks for nonlocal averages.
 inline bool asks_nonlocal(const SystemSpec& spec) {
   return std::ranges::any_of(spec.bodies,
-                             [&](const BodySpec& b) { return nonlocal_length(spec.materials[b.material].model) > 0.0; });
+                             [&](const BodySpec& b) { return !b.rigid() && nonlocal_length(spec.materials[b.material].model) > 0.0; });
 }
 
 namespace detail {
@@ -49,7 +49,8 @@ double initial_volume(const ParticleBatch<D>& b, std::size_t p, const std::vecto
 template <int D, class Shape>
 double largest_nonlocal_length(const DiscreteSystem<D, Shape>& system) {
   double l = 0.0;
-  for (const auto& b : system.batches) l = std::max(l, nonlocal_length(system.materials[b.material]));
+  for (const auto& b : system.batches)
+    if (b.material >= 0) l = std::max(l, nonlocal_length(system.materials[b.material]));
   return l;
 }
 

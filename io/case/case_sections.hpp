@@ -48,6 +48,11 @@ void read_body(TableReader t, SystemSpec& c, std::size_t index, const std::files
                std::vector<std::string>& wins_over);
 void resolve_wins_over(std::vector<TableReader>& tables, SystemSpec& c,
                        const std::vector<std::vector<std::string>>& names);
+// [[contacts]] k: two bodies in contact and the law between them.
+void read_contact(TableReader t, SystemSpec& c);
+// Once the contacts are read: every rigid body is in one, and rigid bodies
+// only where the scene supports them.
+void check_rigid_bodies(TableReader& root, const SystemSpec& c);
 // [[node_sets]] k: a plane or box of nodes and what it prescribes.
 void read_node_set(TableReader t, SystemSpec& c, std::size_t index);
 // [[surface_fluxes]] k: a heat or solvent flux through a body's face.

@@ -9,6 +9,7 @@
 #include "io/case/case_reader.hpp"
 #include "io/case/case_sections.hpp"
 #include "discretisation/bodies/body_shape.hpp"
+#include "discretisation/loads/load_context.hpp"
 #include "io/case/particle_file.hpp"
 
 namespace flowmpm {
@@ -90,6 +91,26 @@ void read_body_particles(TableReader& t, SystemSpec& c, BodySpec& b, const std::
   b.spacing = read_spacing(t, c, b.shape.bounds());
 }
 
+// A rigid body (contact): its particles and its velocity, nothing else.
+void read_rigid_body(TableReader& t, SystemSpec& c, BodySpec& b, const std::filesystem::path& case_file) {
+  b.material = -1;
+  b.rigid_velocity.emplace();
+  t.read_table("rigid", [&](ParameterTable& r) {
+    if (!r.has("velocity")) return;
+    *b.rigid_velocity = read_axis_functions(r, "velocity", c.dimension, "a velocity in m/s");
+  });
+  for (const char* key : {"material", "velocity", "material_axes", "material_axes_center", "temperature",
+                          "concentration", "initial_stress"}) {
+    if (t.has(key)) t.fail(key, "nothing: a rigid body has no material and no state; it moves with rigid.velocity");
+  }
+  if (c.conducts_heat() || c.diffuses_solvent())
+    t.fail("rigid", "no rigid body in a scene that conducts heat or diffuses solvent (not supported yet)");
+  read_body_particles(t, c, b, case_file);
+  if (t.has("wins_over")) t.fail("wins_over", "nothing: a rigid body may not overlap another body");
+  t.reject_unknown_keys();
+  c.bodies.push_back(std::move(b));
+}
+
 }  // namespace
 
 void read_body(TableReader t, SystemSpec& c, std::size_t index, const std::filesystem::path& case_file,
@@ -97,6 +118,10 @@ void read_body(TableReader t, SystemSpec& c, std::size_t index, const std::files
   BodySpec b;
   b.name = t.string_or("name", "body" + std::to_string(index));
   b.where = t.where("");
+  if (t.has("rigid")) {
+    read_rigid_body(t, c, b, case_file);
+    return;
+  }
   const std::string material = t.string("material");
   b.material = -1;
   std::string known;

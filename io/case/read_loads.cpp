@@ -19,6 +19,13 @@ void read_load(TableReader t, SystemSpec& c) {
   }
   for (const NodeSetSpec& s : c.node_sets) context.node_set_names.push_back(s.name);
   c.loads.push_back(Loads::read(t, "type", context));
+  std::visit(
+      [&](const auto& load) {
+        if constexpr (requires { load.body; }) {
+          t.require(!c.bodies[load.body].rigid(), "body", "a body that is not rigid (a rigid body moves as it is told)");
+        }
+      },
+      c.loads.back());
   t.reject_unknown_keys();
 }
 

@@ -45,6 +45,8 @@ struct RunSummary {
   // With damping: the energy it removed (J, >= 0; per unit thickness in 2D),
   // part of dissipated_energy (docs/guide/loads.md).
   std::optional<double> damping_dissipated;
+  // With contact: the contact's work on the bodies (J; WorkDone::contact).
+  std::optional<double> contact_work;
   std::vector<BodySummary> bodies;
   // Error norms against a reference solution, by name (empty without one).
   std::map<std::string, double> errors;

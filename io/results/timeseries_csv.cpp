@@ -31,7 +31,7 @@ std::string header_of(const std::vector<std::string>& body_names, const std::vec
     for (const char* quantity : {".stress_", ".strain_"})
       for (const char* component : voigt_component_names)
         header += "," + csv_field(name + quantity + component);
-  for (const std::string& name : reactions) header += "," + csv_field("reaction." + name);
+  for (const std::string& name : reactions) header += "," + csv_field(name);
   for (const std::string& name : error_names) header += "," + csv_field("error." + name);
   return header + '\n';
 }
@@ -82,7 +82,7 @@ TimeseriesCsv::TimeseriesCsv(const std::filesystem::path& path, const std::vecto
 
 std::vector<std::string> reaction_names(const Diagnostics& row) {
   std::vector<std::string> names;
-  for (const Reaction& r : row.reactions) names.push_back(r.node_set + "." + "xyz"[r.axis]);
+  for (const Reaction& r : row.reactions) names.push_back(r.column());
   return names;
 }
 
@@ -123,7 +123,7 @@ void TimeseriesCsv::write(const Diagnostics& row, double balance_error, const st
   for (const BodyMeans& body : row.bodies)
     for (const auto* values : {&body.stress, &body.strain})
       for (const double value : *values) add(value);
-  for (const Reaction& r : row.reactions) add(r.force);
+  for (const Reaction& r : row.reactions) add(r.value);
   for (const double value : errors) add(value);
   line += '\n';
   errno = 0;

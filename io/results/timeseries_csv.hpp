@@ -17,14 +17,15 @@
 
 namespace flowmpm {
 
-// "<set>.<axis>" for each reaction of `row`.
+// The column names of `row`'s reactions and contact columns
+// ("reaction.<set>.<axis>", "contact.<pair>.normal", ...: Reaction::column).
 std::vector<std::string> reaction_names(const Diagnostics& row);
 
 class TimeseriesCsv {
  public:
   // Creates (truncates) the file and writes the header; throws
   // std::runtime_error naming the path.
-  // `reactions` names the columns "<set>.<axis>" in the order of
+  // `reactions` names the columns after the bodies' in the order of
   // Diagnostics::reactions (reaction_names()).
   TimeseriesCsv(const std::filesystem::path& path, const std::vector<std::string>& body_names,
                 const std::vector<std::string>& reactions = {}, const std::vector<std::string>& error_names = {});

@@ -1,0 +1,73 @@
+// Contact between bodies on the grid with multiple velocity fields
+// (Bardenhagen, Brackbill and Sulsky 2000; Nairn 2013): each body a case
+// puts in contact maps its mass and momentum to a nodal field of its own,
+// and a rigid body (its particles move with a prescribed velocity) maps
+// only its volume. Where two fields meet at a node, the pair's contact law
+// corrects their velocities (tasks/contact.hpp); the bodies in no contact
+// share the grid's own field (field 0), as without contact.
+// Fields are numbered: 0 the grid's, 1..K the deformable contact bodies',
+// K+1..K+R the rigid bodies'. Present in a system only when its case has
+// [[contacts]] (DiscreteSystem::contact).
+#pragma once
+#include <string>
+#include <vector>
+
+#include "discretisation/contact/contact_laws.hpp"
+#include "discretisation/grid/grid.hpp"
+#include "discretisation/loads/external_loads.hpp"
+
+namespace flowmpm {
+
+// A pair of fields in contact, and what the contact did over the last step.
+struct ContactPair {
+  std::string name;         // "block~floor", the timeseries' columns contact.<name>.*
+  int first = 1, second = 2;  // fields: first deformable, second deformable or rigid
+  ContactLaw law;
+  // The bodies touch at a node where their volumes there, sum_p N_Ip V_p
+  // of each, fill at least this fraction of the node's volume (prod h).
+  double touch_fraction = 0.8;
+  // Over the last step, on the first body (N; N/m in 2D): the normal force
+  // (>= 0 pressing) and the tangential force's magnitude.
+  double normal_force = 0.0, tangential_force = 0.0;
+};
+
+// A rigid body: its velocity (per axis, absent = 0), the force the bodies
+// in contact put on it in the last step (N; N/m in 2D) and the work it has
+// done on them since t = 0 (J; J/m in 2D).
+template <int D>
+struct RigidMotion {
+  std::string name;
+  AxisFunctions velocity;
+  Vec<D> force = Vec<D>::Zero();
+  double work = 0.0;
+
+  Vec<D> at(double t) const {
+    Vec<D> v = Vec<D>::Zero();
+    for (int d = 0; d < D; ++d)
+      if (velocity[d]) v[d] = (*velocity[d])(t);
+    return v;
+  }
+};
+
+template <int D>
+struct ContactFields {
+  using VectorField = typename NodalField<D>::VectorField;
+  std::vector<NodalField<D>> deformable;  // field k (1..K) at deformable[k - 1]
+  std::vector<RigidMotion<D>> rigid;      // field K + 1 + r at rigid[r]
+  // Per contact field k >= 1 at [k - 1]: the nodal volume sum_p N_Ip V_p
+  // (m^3; m^2 in 2D) and sum_p V_p grad N_Ip, which points out of the body
+  // at its surface nodes (the normals).
+  std::vector<std::vector<double>> volume;
+  std::vector<VectorField> volume_gradient;
+  std::vector<ContactPair> pairs;
+  // contact_law[a * fields + b]: the index into pairs of fields a < b, -1
+  // for stick (fields = 1 + K + R).
+  std::vector<int> pair_of;
+  int fields = 1;
+
+  int deformable_count() const { return static_cast<int>(deformable.size()); }
+  bool is_rigid(int field) const { return field > deformable_count(); }
+  int pair_index(int a, int b) const { return pair_of[static_cast<std::size_t>(a * fields + b)]; }
+};
+
+}  // namespace flowmpm

@@ -1,0 +1,271 @@
+// Contact stages (docs/theory/contact.md), only in a scene with [[contacts]]
+// (discretisation/contact/contact_fields.hpp):
+//   contact_volumes:   per contact field k, V_kI = sum_p N_Ip V_p and its
+//                      gradient G_kI = sum_p V_p grad N_Ip, from the
+//                      particles at the start of the step;
+//   contact_projected: after a grid_velocity whose velocities the stress
+//                      update reads (USF, and MUSL's second projection): the
+//                      contact laws applied to those velocities;
+//   contact_updated:   after grid_integrate: the laws applied to the updated
+//                      momenta, the impulses added to each field's momentum,
+//                      velocity and velocity change (so FLIP and PIC both see
+//                      them), the forces and the work measured.
+// At a node where fields a and b both carry mass (b may be a rigid body,
+// whose velocity V is prescribed and whose mass counts as infinite):
+//   r = v_a - v_cm, v_cm = (p_a + p_b) / (m_a + m_b)   (v_cm = V if b is rigid),
+// and the pair's law gives a's velocity change dv_a(r, n); b takes the
+// opposite impulse, -m_a dv_a. Laws other than stick act only where the
+// bodies touch, V_a + V_b >= touch_fraction * (node volume prod h), and
+// approach, r . n > 0, n the unit normal out of a:
+//   n = (G_a - G_b) / |G_a - G_b|  between deformable bodies (the mean of
+//       both bodies' normals, symmetric: n_b = -n_a),
+//   n = -G_b / |G_b|               against a rigid body (its surface is exact),
+// G = sum_p V_p grad N_Ip pointing out of a body at its surface nodes (N_Ip
+// grows as a particle moves towards node I).
+// A node shared by more than two fields applies its pairs one after the
+// other, in field order. Each field keeps its own constraints and loads
+// (tasks/grid_update.hpp). Serial over a node's pairs, parallel over slabs
+// of nodes with per-slab sums added in slab order: thread-count independent.
+#pragma once
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <cmath>
+#include <vector>
+
+#include "tasks/grid_update.hpp"
+#include "tasks/parallel_blocks.hpp"
+
+namespace flowmpm {
+
+template <int D, class Shape>
+void contact_volumes(DiscreteSystem<D, Shape>& system) {
+  auto& grid = system.grid;
+  ContactFields<D>& contact = *system.contact;
+  for (std::size_t k = 0; k < contact.volume.size(); ++k) {
+    for_each_active_node(grid, [&](std::size_t n, const Index<D>&) {
+      contact.volume[k][n] = 0.0;
+      for (int d = 0; d < D; ++d) contact.volume_gradient[k][d][n] = 0.0;
+    });
+  }
+  scatter_by_colour(system, [&](ParticleBatch<D>& b, std::uint32_t first, std::uint32_t last, std::uint32_t) {
+    if (b.field == 0) return;
+    double* const to_volume = contact.volume[b.field - 1].data();
+    double* to_gradient[D];
+    for (int d = 0; d < D; ++d) to_gradient[d] = contact.volume_gradient[b.field - 1][d].data();
+    for (std::uint32_t p = first; p < last; ++p) {
+      const Stencil<D, Shape, true> s(grid, b.x[p], b.half_width);
+      const double V = b.volume[p];
+      s.for_each_node_pair([&]<int Count>(int line, int k, std::size_t n) {
+        const auto w = s.template pair_weights<Count>(line, k);
+        store_nodes<Count>(to_volume + n, load_nodes<Count>(to_volume + n) + V * w.N);
+        for (int d = 0; d < D; ++d)
+          store_nodes<Count>(to_gradient[d] + n, load_nodes<Count>(to_gradient[d] + n) + V * w.dN[d]);
+      });
+    }
+  });
+}
+
+namespace detail {
+
+// What contact_updated sums over a slab of nodes, then over the slabs in order.
+template <int D>
+struct ContactSums {
+  std::vector<double> normal;           // per pair: sum of -dp_a . n (N s)
+  std::vector<Vec<D>> tangential;       // per pair: sum of the tangential impulses on a (N s)
+  std::vector<Vec<D>> rigid_impulse;    // per rigid body: the impulse it gave the bodies (N s)
+  std::vector<double> rigid_work;       // per rigid body: dp . V (J)
+  double work = 0.0;                    // dp . (v + v_new) / 2 over the fields (J)
+
+  explicit ContactSums(const ContactFields<D>& c)
+      : normal(c.pairs.size(), 0.0),
+        tangential(c.pairs.size(), Vec<D>::Zero()),
+        rigid_impulse(c.rigid.size(), Vec<D>::Zero()),
+        rigid_work(c.rigid.size(), 0.0) {}
+};
+
+// The velocities of node n's fields, corrected pair by pair. `Updated`:
+// after grid_integrate, from the momenta (and with the sums); otherwise
+// the projected velocities the stress update reads.
+template <int D, class Shape, bool Updated>
+struct NodeContact {
+  DiscreteSystem<D, Shape>& system;
+  const ContactFields<D>& contact;
+  std::vector<Vec<D>> rigid_velocity;  // per rigid body, at this stage's time
+  double node_volume = 1.0;            // prod h
+  // Scratch, per field: mass, velocity, velocity change so far.
+  std::vector<double> m;
+  std::vector<Vec<D>> v, dv;
+
+  NodeContact(DiscreteSystem<D, Shape>& s, double time)
+      : system(s), contact(*s.contact), m(s.field_count()), v(s.field_count()), dv(s.field_count()) {
+    for (const RigidMotion<D>& r : contact.rigid) rigid_velocity.push_back(r.at(time));
+    for (int d = 0; d < D; ++d) node_volume *= s.grid.h[d];
+  }
+
+  bool touch(const ContactPair& pair, std::size_t n) const {
+    return contact.volume[pair.first - 1][n] + contact.volume[pair.second - 1][n] >=
+           pair.touch_fraction * node_volume;
+  }
+
+  Vec<D> gradient(int field, std::size_t n) const {
+    Vec<D> g;
+    for (int d = 0; d < D; ++d) g[d] = contact.volume_gradient[field - 1][d][n];
+    return g;
+  }
+
+  // The law's velocity change of field a for relative velocity r: the
+  // whole of -r for stick; else only where the pair touches and approaches.
+  // Sets `normal` (zero for stick).
+  Vec<D> change(int pair_index, int a, int b, std::size_t n, const Vec<D>& r, Vec<D>& normal) const {
+    normal.setZero();
+    if (pair_index < 0) return -r;  // fields no contact pairs stick
+    const ContactPair& pair = contact.pairs[static_cast<std::size_t>(pair_index)];
+    return std::visit(
+        [&](const auto& law) -> Vec<D> {
+          if constexpr (!std::decay_t<decltype(law)>::detects_contact) {
+            return law.velocity_change(r, normal);
+          } else {
+            if (!touch(pair, n)) return Vec<D>::Zero();
+            const Vec<D> g = contact.is_rigid(b) ? Vec<D>(-gradient(b, n)) : Vec<D>(gradient(a, n) - gradient(b, n));
+            const double length = g.norm();
+            if (!(length > 0.0)) return Vec<D>::Zero();
+            normal = g / length;
+            if (!(r.dot(normal) > 0.0)) return Vec<D>::Zero();  // separating or sliding apart
+            return law.velocity_change(r, normal);
+          }
+        },
+        pair.law);
+  }
+
+  // Corrects node n; adds to `sums` when Updated.
+  void operator()(std::size_t n, ContactSums<D>& sums) {
+    const int fields = system.field_count();
+    int present = 0;
+    for (int k = 0; k < fields; ++k) {
+      const NodalField<D>& f = system.field(k);
+      m[k] = f.mass[n];
+      if (!(m[k] > 0.0)) continue;
+      ++present;
+      for (int d = 0; d < D; ++d) v[k][d] = Updated ? f.momentum[d][n] / m[k] : f.velocity[d][n];
+      dv[k].setZero();
+    }
+    bool rigid_here = false;
+    for (std::size_t r = 0; r < contact.rigid.size(); ++r)
+      rigid_here = rigid_here || contact.volume[fields - 1 + r][n] > 0.0;
+    if (present + (rigid_here ? 1 : 0) < 2) return;
+    Vec<D> normal;
+    for (int a = 0; a < fields; ++a) {
+      if (!(m[a] > 0.0)) continue;
+      // Deformable pairs.
+      for (int b = a + 1; b < fields; ++b) {
+        if (!(m[b] > 0.0)) continue;
+        const Vec<D> va = v[a] + dv[a], vb = v[b] + dv[b];
+        const Vec<D> r = (m[b] / (m[a] + m[b])) * (va - vb);  // v_a - v_cm
+        const int pair = contact.pair_index(a, b);
+        const Vec<D> change_a = this->change(pair, a, b, n, r, normal);
+        if (change_a.isZero(0.0)) continue;
+        const Vec<D> impulse = m[a] * change_a;
+        const Vec<D> change_b = -impulse / m[b];
+        dv[a] += change_a;
+        dv[b] += change_b;
+        if constexpr (Updated) {
+          sums.work += impulse.dot(va + 0.5 * change_a) - impulse.dot(vb + 0.5 * change_b);
+          if (pair >= 0) add_pair_sums(sums, static_cast<std::size_t>(pair), impulse, normal);
+        }
+      }
+      // Rigid bodies.
+      for (std::size_t ri = 0; ri < contact.rigid.size(); ++ri) {
+        const int b = fields + static_cast<int>(ri);
+        const int pair = contact.pair_index(a, b);
+        if (pair < 0 || !(contact.volume[b - 1][n] > 0.0)) continue;
+        const Vec<D> va = v[a] + dv[a];
+        const Vec<D> change_a = this->change(pair, a, b, n, Vec<D>(va - rigid_velocity[ri]), normal);
+        if (change_a.isZero(0.0)) continue;
+        const Vec<D> impulse = m[a] * change_a;
+        dv[a] += change_a;
+        if constexpr (Updated) {
+          sums.work += impulse.dot(va + 0.5 * change_a);
+          sums.rigid_impulse[ri] += impulse;
+          sums.rigid_work[ri] += impulse.dot(rigid_velocity[ri]);
+          add_pair_sums(sums, static_cast<std::size_t>(pair), impulse, normal);
+        }
+      }
+    }
+    // Write back what changed.
+    for (int k = 0; k < fields; ++k) {
+      if (!(m[k] > 0.0) || dv[k].isZero(0.0)) continue;
+      NodalField<D>& f = system.field(k);
+      if constexpr (Updated) {
+        const bool held = held_node<D, Shape>(f, n, system.dt);
+        for (int d = 0; d < D; ++d) {
+          f.momentum[d][n] += m[k] * dv[k][d];
+          if (!held) f.velocity[d][n] += dv[k][d];
+          f.velocity_change[d][n] += dv[k][d];
+        }
+      } else {
+        for (int d = 0; d < D; ++d) f.velocity[d][n] += dv[k][d];
+      }
+    }
+  }
+
+  static void add_pair_sums(ContactSums<D>& sums, std::size_t pair, const Vec<D>& impulse, const Vec<D>& normal) {
+    const double along = impulse.dot(normal);
+    sums.normal[pair] -= along;
+    sums.tangential[pair] += impulse - along * normal;
+  }
+};
+
+// Runs NodeContact over the active nodes, slab by slab in parallel, and
+// returns the sums of each slab in slab order.
+template <int D, class Shape, bool Updated>
+std::vector<ContactSums<D>> contact_pass(DiscreteSystem<D, Shape>& system, double time) {
+  const auto& grid = system.grid;
+  const int first = grid.active_lo[D - 1], last = grid.active_hi[D - 1];
+  std::vector<ContactSums<D>> slab_sums(static_cast<std::size_t>(last - first + 1), ContactSums<D>(*system.contact));
+  tbb::parallel_for(tbb::blocked_range<int>(first, last + 1), [&](const tbb::blocked_range<int>& slabs) {
+    NodeContact<D, Shape, Updated> node(system, time);
+    for (int slab = slabs.begin(); slab != slabs.end(); ++slab) {
+      ContactSums<D>& sums = slab_sums[static_cast<std::size_t>(slab - first)];
+      grid.for_each_active_node_in_slab(slab, [&](std::size_t n, const Index<D>&) { node(n, sums); });
+    }
+  });
+  return slab_sums;
+}
+
+}  // namespace detail
+
+template <int D, class Shape>
+void contact_projected(DiscreteSystem<D, Shape>& system) {
+  detail::contact_pass<D, Shape, false>(system, system.t);
+}
+
+template <int D, class Shape>
+void contact_updated(DiscreteSystem<D, Shape>& system) {
+  ContactFields<D>& contact = *system.contact;
+  const double dt = system.dt;
+  const auto slab_sums = detail::contact_pass<D, Shape, true>(system, system.t + dt);
+  detail::ContactSums<D> total(contact);
+  for (const auto& s : slab_sums) {
+    for (std::size_t i = 0; i < contact.pairs.size(); ++i) {
+      total.normal[i] += s.normal[i];
+      total.tangential[i] += s.tangential[i];
+    }
+    for (std::size_t r = 0; r < contact.rigid.size(); ++r) {
+      total.rigid_impulse[r] += s.rigid_impulse[r];
+      total.rigid_work[r] += s.rigid_work[r];
+    }
+    total.work += s.work;
+  }
+  for (std::size_t i = 0; i < contact.pairs.size(); ++i) {
+    contact.pairs[i].normal_force = total.normal[i] / dt;
+    contact.pairs[i].tangential_force = total.tangential[i].norm() / dt;
+  }
+  for (std::size_t r = 0; r < contact.rigid.size(); ++r) {
+    contact.rigid[r].force = -total.rigid_impulse[r] / dt;  // on the rigid body
+    contact.rigid[r].work += total.rigid_work[r];
+  }
+  system.work.contact += total.work;
+}
+
+}  // namespace flowmpm
