@@ -3,11 +3,16 @@
 //   uniform:   `stress`, six components listed xx, yy, zz, xy, yz, xz
 //              (as results.h5 writes them);
 //   geostatic: from gravity and the depth below the body's top,
-//              sigma_v = -rho |g| (top - z) along the gravity axis z, each
-//              horizontal normal stress K0 sigma_v (`k0`), no shear. The
-//              out-of-plane stress of 2D plane strain is horizontal too
-//              (K0 = nu / (1 - nu) is then the elastic at-rest state);
-//              plane stress and 1D keep their zero components.
+//              sigma_v = -rho |g_z| (top - z) along the vertical z (the
+//              axis of gravity's largest component), each horizontal normal
+//              stress K0 sigma_v (`k0`). The out-of-plane stress of 2D
+//              plane strain is horizontal too (K0 = nu / (1 - nu) is then
+//              the elastic at-rest state); plane stress and 1D keep their
+//              zero components. Gravity tilted towards a horizontal axis h
+//              (a body on a slope) adds the shear of the infinite slope,
+//              sigma_hz = rho g_h (top - z), which with sigma_v balances
+//              gravity and leaves the top free (Lambe and Whitman, Soil
+//              Mechanics, the infinite slope); no shear otherwise.
 // Adding one is one new type and one line in the variant below.
 #pragma once
 #include <algorithm>
@@ -53,8 +58,9 @@ struct UniformStress {
 struct GeostaticStress {
   static constexpr const char* type_name = "geostatic";
   double k0 = 0.0;
-  int vertical = 1;           // the axis gravity acts along
-  double weight = 0.0;        // |g| (m/s^2)
+  int vertical = 1;           // the axis of gravity's largest component
+  double weight = 0.0;        // |g_vertical| (m/s^2)
+  Vec3 gravity{};             // m/s^2, for the slope's shear
   int dimension = 3;
   bool plane_stress = false;
 
@@ -62,11 +68,11 @@ struct GeostaticStress {
     GeostaticStress g;
     g.k0 = t.number("k0");
     t.require(g.k0 >= 0.0, "k0", "a coefficient of earth pressure at rest K0 >= 0");
-    int axes = 0;
     for (int d = 0; d < c.dimension; ++d) {
-      if (c.gravity[d] != 0.0) ++axes, g.vertical = d, g.weight = std::abs(c.gravity[d]);
+      if (std::abs(c.gravity[d]) > g.weight) g.vertical = d, g.weight = std::abs(c.gravity[d]);
     }
-    t.require(axes == 1, "type", "a case with gravity along one axis (analysis.gravity) for a geostatic stress");
+    t.require(g.weight > 0.0, "type", "a case with gravity (analysis.gravity) for a geostatic stress");
+    g.gravity = c.gravity;
     g.dimension = c.dimension;
     g.plane_stress = c.plane_stress;
     return g;
@@ -83,6 +89,8 @@ struct GeostaticStress {
       } else if (carried && dimension > 1) {
         s[d] = k0 * vertical_stress;
       }
+      if (d != vertical && d < dimension && gravity[d] != 0.0)
+        s[voigt_slot(d, vertical)] = rho * gravity[d] * (top - x[vertical]);
     }
     return s;
   }
