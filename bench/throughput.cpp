@@ -25,10 +25,15 @@
 // (the engine's wiring) and with it run before them (one after the other),
 // the cost of transport per particle-step, and what running the branches
 // side by side gains.
+// With --contact the block is two half-blocks (y below and above 0.5 m),
+// the upper resting on the lower, in Coulomb contact (mu = 0.3): the
+// program reports per size the rates of the one-body block and of the two
+// bodies in contact, 1 and 2 threads, their ratio, and the peak bytes per
+// particle of each.
 //
 //   build/bench/bench_throughput [--sizes 1e4,1e5,1e6] [--particle-steps N]
 //                                [--repeats R] [--shape linear|gimp|bspline2|bspline3]
-//                                [--transport heat|both] [--csv FILE]
+//                                [--transport heat|both] [--contact] [--csv FILE]
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -56,7 +61,8 @@ namespace {
 // The block: k x k x k cells of 8 particles each (2 per axis), resting on
 // the plane of nodes two cells above the grid's bottom, which is held fixed
 // (two cells of grid around the block leave room for every shape function).
-SystemSpec block_case(std::size_t target_particles, const std::string& shape, const std::string& transport = "") {
+SystemSpec block_case(std::size_t target_particles, const std::string& shape, const std::string& transport = "",
+                      bool contact = false) {
   const int k = std::max(2, static_cast<int>(std::lround(std::cbrt(target_particles / 8.0))));
   const double h = 1.0 / k;  // a 1 m cube
   SystemSpec c;
@@ -99,6 +105,20 @@ SystemSpec block_case(std::size_t target_particles, const std::string& shape, co
   if (!transport.empty()) base.temperature = TimeFunction{{{0.0, 400.0}}};
   if (transport == "both") base.concentration = TimeFunction{{{0.0, 0.1}}};
   c.node_sets.push_back(base);
+  if (contact) {
+    // The same particles as two bodies: the lattice's layers split at y = 0.5 m.
+    c.bodies[0].name = "lower";
+    c.bodies[0].shape = BodyShape{BoxShape{{0.0, 0.0, 0.0}, {1.0, 0.5, 1.0}}};
+    BodySpec upper = c.bodies[0];
+    upper.name = "upper";
+    upper.shape = BodyShape{BoxShape{{0.0, 0.5, 0.0}, {1.0, 1.0, 1.0}}};
+    c.bodies.push_back(upper);
+    ContactSpec pair;
+    pair.first = 0;
+    pair.second = 1;
+    pair.law = CoulombLaw{0.3};
+    c.contacts.push_back(pair);
+  }
   const StableStep stable = stable_time_step(c, scheme_named("usl"));
   c.dt = std::min(0.5 * stable.crossing, stable.dt());
   return c;
@@ -250,6 +270,49 @@ void transport_table(const ShapeRunner& runner, const std::vector<double>& sizes
   }
 }
 
+// The contact table: per size, the median rates of the one-body block and
+// of the two half-blocks in contact, 1 and 2 threads, their ratios, and
+// the peak resident bytes per particle of each.
+void contact_table(const ShapeRunner& runner, const std::vector<double>& sizes, double particle_steps, int repeats,
+                   const std::string& shape, std::ofstream& csv) {
+  std::printf("3D elastic block on a fixed base under gravity, USL, %s shape functions: one body, and two half-blocks"
+              " in Coulomb contact; medians of %d runs\n", shape.c_str(), repeats);
+  std::printf("%10s %6s %10s %10s %10s %10s %8s %8s %9s %9s\n", "particles", "steps", "one 1t", "contact 1t", "one 2t",
+              "contact 2t", "ratio 1t", "ratio 2t", "B/p one", "B/p cont");
+  std::printf("%10s %6s %10s %10s %10s %10s %8s %8s %9s %9s\n", "", "", "Mp-st/s", "Mp-st/s", "Mp-st/s", "Mp-st/s", "",
+              "", "peak", "peak");
+  if (csv) csv << "particles,steps,rate_one_1t,rate_contact_1t,rate_one_2t,rate_contact_2t,bytes_one,bytes_contact\n";
+  for (double size : sizes) {
+    const SystemSpec one = block_case(static_cast<std::size_t>(size), shape);
+    const SystemSpec two = block_case(static_cast<std::size_t>(size), shape, "", true);
+    const int steps = std::max(5, static_cast<int>(particle_steps / size));
+    std::vector<double> o1, c1, o2, c2;
+    std::size_t n = 0;
+    // Peak resident memory of each model, above what the process held before it.
+    auto peak_bytes = [&](const SystemSpec& c) {
+      const std::size_t before = resident_kib("VmRSS:");
+      reset_peak_resident();
+      const Timing t = runner.time_steps(c, 2, false, 5, TransportBranch::beside);
+      return 1024.0 * static_cast<double>(resident_kib("VmHWM:") - before) / static_cast<double>(t.particles);
+    };
+    const double bytes_one = peak_bytes(one), bytes_two = peak_bytes(two);
+    for (int r = 0; r < repeats; ++r) {
+      const Timing t = runner.time_steps(one, 1, false, steps, TransportBranch::beside);
+      n = t.particles;
+      o1.push_back(t.rate);
+      c1.push_back(runner.time_steps(two, 1, false, steps, TransportBranch::beside).rate);
+      o2.push_back(runner.time_steps(one, 2, false, steps, TransportBranch::beside).rate);
+      c2.push_back(runner.time_steps(two, 2, false, steps, TransportBranch::beside).rate);
+    }
+    const double mo1 = median(o1), mc1 = median(c1), mo2 = median(o2), mc2 = median(c2);
+    std::printf("%10zu %6d %10.2f %10.2f %10.2f %10.2f %8.2f %8.2f %9.0f %9.0f\n", n, steps, mo1 / 1e6, mc1 / 1e6,
+                mo2 / 1e6, mc2 / 1e6, mc1 / mo1, mc2 / mo2, bytes_one, bytes_two);
+    std::fflush(stdout);
+    if (csv) csv << n << "," << steps << "," << mo1 << "," << mc1 << "," << mo2 << "," << mc2 << "," << bytes_one << ","
+                 << bytes_two << "\n";
+  }
+}
+
 std::vector<double> parse_sizes(const std::string& text) {
   std::vector<double> sizes;
   std::stringstream ss(text);
@@ -264,6 +327,7 @@ int main(int argc, char** argv) {
   double particle_steps = 3e7;  // per measurement, so that each lasts ~1 s or more
   int repeats = 3;
   std::string csv_path, shape = "linear", transport;
+  bool contact = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto next = [&] {
@@ -278,6 +342,7 @@ int main(int argc, char** argv) {
     else if (a == "--repeats") repeats = std::stoi(next());
     else if (a == "--shape") shape = next();
     else if (a == "--csv") csv_path = next();
+    else if (a == "--contact") contact = true;
     else if (a == "--transport") {
       transport = next();
       if (transport != "heat" && transport != "both") {
@@ -287,12 +352,18 @@ int main(int argc, char** argv) {
     }
     else {
       std::cerr << "usage: bench_throughput [--sizes 1e4,1e5,1e6] [--particle-steps 3e7] [--repeats 3] [--shape linear] "
-                   "[--transport heat|both] [--csv FILE]\n";
+                   "[--transport heat|both] [--contact] [--csv FILE]\n";
       return a == "--help" ? 0 : 1;
     }
   }
 
   const ShapeRunner runner = runner_named(shape);
+  if (contact) {
+    std::ofstream csv;
+    if (!csv_path.empty()) csv.open(csv_path);
+    contact_table(runner, sizes, particle_steps, repeats, shape, csv);
+    return 0;
+  }
   if (!transport.empty()) {
     std::ofstream csv;
     if (!csv_path.empty()) csv.open(csv_path);

@@ -117,9 +117,9 @@ struct WorkDone {
   double expansion = 0.0;  // by the expansion strains (thermal, solvent) against the stress
   double load = 0.0;       // by the tractions, pressures and nodal forces (docs/guide/loads.md)
   // By contact (tasks/contact.hpp): the impulses of the contact laws times
-  // the mean of each field's velocity before and after them, the rigid
-  // bodies' work included; <= 0 between bodies at rest, friction and
-  // impacts taking energy out.
+  // the mean of each field's nodal velocity at the start and at the end of
+  // the step, the rigid bodies' work included; friction and impacts take
+  // energy out (< 0), a moving rigid body may put it in.
   double contact = 0.0;
 };
 

@@ -77,7 +77,7 @@ struct ContactSpec {
   std::string where;          // "file:line: contacts[k]", for messages once the case is read
   int first = 0, second = 1;  // indices into SystemSpec::bodies; second may be rigid, first not
   ContactLaw law;
-  double touch_fraction = 0.8;
+  double touch_fraction = 0.6;
 };
 
 struct NodeSetSpec {

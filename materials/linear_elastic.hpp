@@ -71,11 +71,13 @@ struct LinearElastic {
   }
   bool expands() const { return parameters.expansion.any(); }
 
-  // Strain energy per unit volume: sigma : eps / 2 (all of the strain is
-  // elastic); with expansion, sigma : C^-1 : sigma / 2 = p^2 / (2 K) +
-  // s : s / (4 mu), the elastic part only.
-  double stored_energy(const State&, const Voigt& sigma, const Voigt& eps) const {
-    if (!parameters.expansion.any()) return 0.5 * double_contraction(sigma, eps);
+  // Strain energy per unit volume from the stress, sigma : C^-1 : sigma / 2
+  // = p^2 / (2 K) + s : s / (4 mu): the elastic part of the strain only
+  // (not an expansion's), and a body that starts stressed
+  // (initial_stress) holds its energy from t = 0 (sigma : eps / 2 counted
+  // none, and the blow-up guard stopped a block on a slope whose initial
+  // stress set it moving).
+  double stored_energy(const State&, const Voigt& sigma, const Voigt&) const {
     const double p = (sigma[0] + sigma[1] + sigma[2]) / 3.0, K = lambda + 2.0 * mu / 3.0;
     Voigt s = sigma;
     for (int i = 0; i < 3; ++i) s[i] -= p;

@@ -17,8 +17,8 @@
 // opposite impulse, -m_a dv_a. Laws other than stick act only where the
 // bodies touch, V_a + V_b >= touch_fraction * (node volume prod h), and
 // approach, r . n > 0, n the unit normal out of a:
-//   n = (G_a - G_b) / |G_a - G_b|  between deformable bodies (the mean of
-//       both bodies' normals, symmetric: n_b = -n_a),
+//   n = G_a / |G_a| or -G_b / |G_b|, the normal of the body with more volume
+//       at the node (the better resolved surface there; n_b = -n_a),
 //   n = -G_b / |G_b|               against a rigid body (its surface is exact),
 // G = sum_p V_p grad N_Ip pointing out of a body at its surface nodes (N_Ip
 // grows as a particle moves towards node I).
@@ -75,7 +75,7 @@ struct ContactSums {
   std::vector<Vec<D>> tangential;       // per pair: sum of the tangential impulses on a (N s)
   std::vector<Vec<D>> rigid_impulse;    // per rigid body: the impulse it gave the bodies (N s)
   std::vector<double> rigid_work;       // per rigid body: dp . V (J)
-  double work = 0.0;                    // dp . (v + v_new) / 2 over the fields (J)
+  double work = 0.0;                    // dp . (v_start + v_end) / 2 over the fields (J)
 
   explicit ContactSums(const ContactFields<D>& c)
       : normal(c.pairs.size(), 0.0),
@@ -93,12 +93,18 @@ struct NodeContact {
   const ContactFields<D>& contact;
   std::vector<Vec<D>> rigid_velocity;  // per rigid body, at this stage's time
   double node_volume = 1.0;            // prod h
-  // Scratch, per field: mass, velocity, velocity change so far.
+  // Scratch, per field: mass, velocity, velocity change so far, and (Updated)
+  // the velocity at the start of the step.
   std::vector<double> m;
-  std::vector<Vec<D>> v, dv;
+  std::vector<Vec<D>> v, dv, v_start;
 
   NodeContact(DiscreteSystem<D, Shape>& s, double time)
-      : system(s), contact(*s.contact), m(s.field_count()), v(s.field_count()), dv(s.field_count()) {
+      : system(s),
+        contact(*s.contact),
+        m(s.field_count()),
+        v(s.field_count()),
+        dv(s.field_count()),
+        v_start(s.field_count()) {
     for (const RigidMotion<D>& r : contact.rigid) rigid_velocity.push_back(r.at(time));
     for (int d = 0; d < D; ++d) node_volume *= s.grid.h[d];
   }
@@ -127,7 +133,10 @@ struct NodeContact {
             return law.velocity_change(r, normal);
           } else {
             if (!touch(pair, n)) return Vec<D>::Zero();
-            const Vec<D> g = contact.is_rigid(b) ? Vec<D>(-gradient(b, n)) : Vec<D>(gradient(a, n) - gradient(b, n));
+            // The normal of the body with more volume at the node: its
+            // surface there is the better resolved (a rigid body's is exact).
+            const bool from_b = contact.is_rigid(b) || contact.volume[b - 1][n] > contact.volume[a - 1][n];
+            const Vec<D> g = from_b ? Vec<D>(-gradient(b, n)) : gradient(a, n);
             const double length = g.norm();
             if (!(length > 0.0)) return Vec<D>::Zero();
             normal = g / length;
@@ -147,7 +156,10 @@ struct NodeContact {
       m[k] = f.mass[n];
       if (!(m[k] > 0.0)) continue;
       ++present;
-      for (int d = 0; d < D; ++d) v[k][d] = Updated ? f.momentum[d][n] / m[k] : f.velocity[d][n];
+      for (int d = 0; d < D; ++d) {
+        v[k][d] = Updated ? f.momentum[d][n] / m[k] : f.velocity[d][n];
+        if constexpr (Updated) v_start[k][d] = v[k][d] - f.velocity_change[d][n];
+      }
       dv[k].setZero();
     }
     bool rigid_here = false;
@@ -169,10 +181,8 @@ struct NodeContact {
         const Vec<D> change_b = -impulse / m[b];
         dv[a] += change_a;
         dv[b] += change_b;
-        if constexpr (Updated) {
-          sums.work += impulse.dot(va + 0.5 * change_a) - impulse.dot(vb + 0.5 * change_b);
+        if constexpr (Updated)
           if (pair >= 0) add_pair_sums(sums, static_cast<std::size_t>(pair), impulse, normal);
-        }
       }
       // Rigid bodies.
       for (std::size_t ri = 0; ri < contact.rigid.size(); ++ri) {
@@ -185,7 +195,6 @@ struct NodeContact {
         const Vec<D> impulse = m[a] * change_a;
         dv[a] += change_a;
         if constexpr (Updated) {
-          sums.work += impulse.dot(va + 0.5 * change_a);
           sums.rigid_impulse[ri] += impulse;
           sums.rigid_work[ri] += impulse.dot(rigid_velocity[ri]);
           add_pair_sums(sums, static_cast<std::size_t>(pair), impulse, normal);
@@ -197,6 +206,9 @@ struct NodeContact {
       if (!(m[k] > 0.0) || dv[k].isZero(0.0)) continue;
       NodalField<D>& f = system.field(k);
       if constexpr (Updated) {
+        // The contact's impulse on the field times the mean of its velocity
+        // at the start and at the end of the step.
+        sums.work += m[k] * dv[k].dot(0.5 * (v_start[k] + v[k] + dv[k]));
         const bool held = held_node<D, Shape>(f, n, system.dt);
         for (int d = 0; d < D; ++d) {
           f.momentum[d][n] += m[k] * dv[k][d];

@@ -63,9 +63,14 @@ void check_identical(const ParticleSnapshot& a, const ParticleSnapshot& b,
   }
 }
 
+// The impact with Coulomb contact between the bodies (tasks/contact.hpp):
+// each body a velocity field of its own, the contact stages in the graph.
+const char* const coulomb_contact =
+    "[[contacts]]\nbodies = [\"projectile\", \"target\"]\nlaw = \"coulomb\"\nfriction = 0.3\n";
+
 template <int D, class Shape = LinearShape>
-void check_dimension() {
-  const Case c = testing::case_from_text("impact" + std::to_string(D) + "d", impact_case(D),
+void check_dimension(const std::string& extra = "") {
+  const Case c = testing::case_from_text("impact" + std::to_string(D) + "d", impact_case(D) + extra,
                                          {std::string("analysis.shape_function=") + Shape::name});
   std::int64_t sorts = 0;
   const ParticleSnapshot one = run<D, Shape>(c, 1, false, &sorts);
@@ -84,6 +89,12 @@ void check_dimension() {
 TEST_CASE("1D: 1 thread, 2 threads and the serial step agree bit for bit") { check_dimension<1>(); }
 TEST_CASE("2D: 1 thread, 2 threads and the serial step agree bit for bit") { check_dimension<2>(); }
 TEST_CASE("3D: 1 thread, 2 threads and the serial step agree bit for bit") { check_dimension<3>(); }
+TEST_CASE("contact: 1 thread, 2 threads and the serial step agree bit for bit") {
+  check_dimension<1>(coulomb_contact);
+  check_dimension<2>(coulomb_contact);
+  check_dimension<3>(coulomb_contact);
+  check_dimension<2, GimpShape>(coulomb_contact);
+}
 TEST_CASE("uGIMP and B-splines (wider blocks): bit for bit too") {
   check_dimension<2, GimpShape>();
   check_dimension<2, QuadraticBSpline>();

@@ -1,8 +1,7 @@
 // A body on a plane, gravity tilted by theta from the plane's normal (y)
 // towards x, in contact with the plane by the law of its [[contacts]]
 // entry (Coulomb coefficient mu; 0 frictionless). From rest, its centre of
-// mass moves along x by (rigid-body dynamics, e.g. Meriam and Kraige,
-// Engineering Mechanics: Dynamics, sliding and rolling on an incline):
+// mass moves along x by (rigid-body dynamics, [Meriam 2012]):
 //   slide (a block):          s = g (sin theta - mu cos theta) t^2 / 2 when mu < tan theta, else 0;
 //   roll (a disk, plane strain, a solid cylinder):
 //                             s = g sin theta t^2 / 3 when mu >= tan(theta) / 3 (no slip),

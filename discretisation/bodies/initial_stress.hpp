@@ -11,8 +11,8 @@
 //              zero components. Gravity tilted towards a horizontal axis h
 //              (a body on a slope) adds the shear of the infinite slope,
 //              sigma_hz = rho g_h (top - z), which with sigma_v balances
-//              gravity and leaves the top free (Lambe and Whitman, Soil
-//              Mechanics, the infinite slope); no shear otherwise.
+//              gravity and leaves the top free ([Lambe 1969], the infinite
+//              slope); no shear otherwise.
 // Adding one is one new type and one line in the variant below.
 #pragma once
 #include <algorithm>

@@ -25,7 +25,7 @@ struct ContactPair {
   ContactLaw law;
   // The bodies touch at a node where their volumes there, sum_p N_Ip V_p
   // of each, fill at least this fraction of the node's volume (prod h).
-  double touch_fraction = 0.8;
+  double touch_fraction = 0.6;
   // Over the last step, on the first body (N; N/m in 2D): the normal force
   // (>= 0 pressing) and the tangential force's magnitude.
   double normal_force = 0.0, tangential_force = 0.0;

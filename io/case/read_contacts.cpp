@@ -21,7 +21,8 @@ void read_contact(TableReader t, SystemSpec& c) {
   int index[2];
   for (int i = 0; i < 2; ++i) {
     const auto it = std::ranges::find(known, names[static_cast<std::size_t>(i)]);
-    if (it == known.end()) t.fail("bodies", "names of bodies among " + quoted_list(known));
+    if (it == known.end())
+      t.fail("bodies", "names of bodies among " + quoted_list(known) + " (\"" + names[static_cast<std::size_t>(i)] + "\" is none)");
     index[i] = static_cast<int>(it - known.begin());
   }
   if (index[0] == index[1]) t.fail("bodies", "two different bodies");

