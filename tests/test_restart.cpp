@@ -376,6 +376,15 @@ TEST_CASE("loads and damping: the pressure's work and the damping's dissipation 
   check_restart_matches(dir, config_file("benchmarks/thick_cylinder.toml"), 1500, {"output.every=250"});
 }
 
+TEST_CASE("contact: the contact forces, the rigid body's force and work, and the contact's work carry") {
+  // The block sliding on the rigid incline of configs/contact, checkpointed
+  // mid-slide; the rigid floor's particles are re-sorted as the block
+  // moves. timeseries.csv has the contact columns.
+  TempDir dir("flowmpm_restart");
+  check_restart_matches(dir, config_file("contact/incline_block_rigid.toml"), 3000,
+                        {"output.every=1000", "analysis.end_time=0.5"});
+}
+
 TEST_CASE("nonlocal strain softening: the averages and the damage carry") {
   // The symmetric bar of configs/materials: a band opens through the
   // nonlocal averages (weights rebuilt after the restart from x0, carried).
