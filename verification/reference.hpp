@@ -21,6 +21,7 @@
 #include "verification/elastic_wave.hpp"
 #include "verification/incline.hpp"
 #include "verification/plate_with_hole.hpp"
+#include "verification/prandtl_punch.hpp"
 #include "verification/slab_transport.hpp"
 #include "verification/swelling_bending.hpp"
 #include "verification/swelling_slab.hpp"
@@ -35,7 +36,7 @@ namespace flowmpm {
 using ReferenceSolution =
     std::variant<AxialVibration, ElasticWave, UniaxialStress, ColumnSelfWeight, SlabTransport, ThermalStress,
                  SwellingSlab, SwellingBending, UniformStressReference, PlateWithHole, ThickCylinder, Cantilever,
-                 ElasticImpact, TaylorImpact, Incline>;
+                 ElasticImpact, TaylorImpact, Incline, PrandtlPunch>;
 using ReferenceSolutions = Registry<ReferenceSolution>;
 
 class Reference {
