@@ -4,9 +4,9 @@
 // is one the reader asks for. Reading a case asks for every key of each
 // table it reads, given or not (optional keys, a variant's keys for the
 // type given), so the shipped cases, which use every section and every
-// type, reach nearly every key; the probe below reaches the rest (3D loads
+// type, reach nearly every key; the probes below reach the rest (3D loads
 // with a combined region, a body force, a surface flux, a uniform initial
-// stress). A key that neither reaches fails the second direction until a
+// stress; a 3D rigid body moving along z). A key that neither reaches fails the second direction until a
 // case uses it. Not covered: the sweep file
 // (docs/reference/sweep_file.md, its own reader) and the command line
 // (cli.md).
@@ -114,6 +114,38 @@ body = "block"
 acceleration = { z = -1.0 }
 )";
 
+// A 3D rigid obstacle moving along z (the shipped 3D floor is at rest).
+constexpr const char* probe_rigid = R"(
+[analysis]
+dimension = 3
+dt = 1e-4
+steps = 1
+[grid]
+origin = [0.0, 0.0, 0.0]
+cell_size = 0.25
+cells = [8, 8, 8]
+[materials.m]
+type = "linear_elastic"
+density = 1000.0
+youngs_modulus = 1e6
+poisson_ratio = 0.3
+[[bodies]]
+name = "block"
+material = "m"
+min = [0.5, 0.5, 0.5]
+max = [1.5, 1.5, 1.0]
+particles_per_cell = 2
+[[bodies]]
+name = "plate"
+rigid = { velocity = { z = -0.1 } }
+min = [0.5, 0.5, 1.0]
+max = [1.5, 1.5, 1.25]
+particles_per_cell = 2
+[[contacts]]
+bodies = ["block", "plate"]
+law = "frictionless"
+)";
+
 std::string listed(const std::set<std::string>& keys) {
   std::string text;
   for (const std::string& k : keys) text += "\n  " + k;
@@ -125,6 +157,7 @@ std::string listed(const std::set<std::string>& keys) {
 TEST_CASE("every key the reader accepts is documented in docs/reference, and every documented key is accepted") {
   const std::size_t cases = read_shipped_cases();
   CHECK_NOTHROW(testing::case_from_text("key_reference_probe", probe));
+  CHECK_NOTHROW(testing::case_from_text("key_reference_probe_rigid", probe_rigid));
   const std::set<std::string> asked = asked_keys();
   const std::set<std::string> documented = documented_keys();
   MESSAGE(cases << " shipped cases read: the reader asked for " << asked.size() << " keys; docs/reference documents "
