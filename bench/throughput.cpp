@@ -116,6 +116,7 @@ SystemSpec block_case(std::size_t target_particles, const std::string& shape, co
     ContactSpec pair;
     pair.first = 0;
     pair.second = 1;
+    pair.names = {"lower", "upper"};
     pair.law = CoulombLaw{0.3};
     c.contacts.push_back(pair);
   }

@@ -69,13 +69,19 @@ struct BodySpec {
   // axis, absent = 0) and carry no mass, no material and no stress.
   std::optional<AxisFunctions> rigid_velocity;
   bool rigid() const { return rigid_velocity.has_value(); }
+  // Its contact group (an index into SystemSpec::contact_groups; -1 none):
+  // the bodies of a group share one velocity field.
+  int contact_group = -1;
 };
 
 // Two bodies in contact and the law between them
 // (discretisation/contact/contact_fields.hpp).
 struct ContactSpec {
   std::string where;          // "file:line: contacts[k]", for messages once the case is read
-  int first = 0, second = 1;  // indices into SystemSpec::bodies; second may be rigid, first not
+  // Indices into SystemSpec::bodies, of a body or of the first body of a
+  // contact group (its field is the group's); second may be rigid, first not.
+  int first = 0, second = 1;
+  std::array<std::string, 2> names;  // the bodies or groups as the case names them
   ContactLaw law;
   double touch_fraction = 0.6;
 };
@@ -128,6 +134,7 @@ struct SystemSpec {
   std::vector<NodeSetSpec> node_sets;
   std::vector<SurfaceFluxSpec> surface_fluxes;
   std::vector<ContactSpec> contacts;  // empty: no contact, one velocity field
+  std::vector<std::string> contact_groups;  // names of groups of bodies sharing a field (BodySpec::contact_group)
 
   // The particles carry a temperature when some material conducts heat, a
   // concentration when some material diffuses solvent; nothing otherwise.

@@ -10,6 +10,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 #include "discretisation/shapes/shape_functions.hpp"
@@ -141,6 +143,28 @@ TEST_CASE("a rigid flat punch in a von Mises block: Prandtl's limit pressure, co
   CHECK(error[2] < error[1]);
 }
 
+TEST_CASE("a contact group: two halves of the block in one field slide as the block") {
+  // The block of incline_block_rigid.toml as two bodies side by side, a
+  // contact group in Coulomb contact (mu = 0.2) with the plane: they share
+  // one velocity field, stick to each other and slide as one body.
+  std::ifstream file(testing::config("contact/incline_block_rigid.toml"));
+  std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  const std::string block = "name = \"block\"\nmaterial = \"soft\"\nparticles_per_cell = 2\nmin = [0.0, 0.0]\nmax = [0.2, 0.1]\n";
+  REQUIRE(text.find(block) != std::string::npos);
+  text.replace(text.find(block), block.size(),
+               "name = \"left\"\nmaterial = \"soft\"\nparticles_per_cell = 2\nmin = [0.0, 0.0]\nmax = [0.1, 0.1]\n"
+               "initial_stress = { type = \"geostatic\", k0 = 0.4286 }\n[[bodies]]\n"
+               "name = \"right\"\nmaterial = \"soft\"\nparticles_per_cell = 2\nmin = [0.1, 0.0]\nmax = [0.2, 0.1]\n");
+  text.replace(text.find("bodies = [\"block\", \"floor\"]"), 27, "bodies = [\"halves\", \"floor\"]");
+  text.replace(text.find("body = \"block\""), 14, "body = \"left\"");
+  text += "\n[[contact_groups]]\nname = \"halves\"\nbodies = [\"left\", \"right\"]\n";
+  const Case c = testing::case_from_text("incline_group", text);
+  const RunSummary s = testing::run(c);
+  MESSAGE("contact group on the incline: the left half moved " << s.measures.at("displacement") << " m against "
+                                                                << s.measures.at("expected") << " m");
+  CHECK(s.errors.at("displacement") < 0.02);
+}
+
 TEST_CASE("a block on a deformable slab (Coulomb, mu = 0.2) slides as on the rigid plane") {
   CHECK(incline_error("contact/incline_block_slab.toml", {}) < 0.02);
 }
@@ -204,7 +228,7 @@ TEST_CASE("bad contact input is rejected with the file, line and key") {
   SUBCASE("a valid pair builds") { CHECK(rejection("valid", two_blocks + contact).empty()); }
   SUBCASE("an unknown body") {
     const std::string m = rejection("unknown", two_blocks + "[[contacts]]\nbodies = [\"a\", \"b\"]\nlaw = \"stick\"\n");
-    CHECK(m.find("unknown.toml:28: contacts[0].bodies: expected names of bodies among \"a\", \"wall\" (\"b\" is none)") !=
+    CHECK(m.find("unknown.toml:28: contacts[0].bodies: expected names of bodies or contact groups among \"a\", \"wall\" (\"b\" is none)") !=
           std::string::npos);
   }
   SUBCASE("a negative friction") {
@@ -243,6 +267,27 @@ TEST_CASE("bad contact input is rejected with the file, line and key") {
     const std::string m = rejection("overlap", text);
     CHECK(m.find("overlap") != std::string::npos);
     CHECK(m.find("\"wall\"") != std::string::npos);
+  }
+  SUBCASE("a body in two contact groups") {
+    const std::string m = rejection(
+        "two_groups", two_blocks + contact +
+                          "[[bodies]]\nname = \"c\"\nmaterial = \"soft\"\nparticles_per_cell = 2\nmin = [0.2, 0.5]\nmax = [0.4, 0.7]\n"
+                          "[[contact_groups]]\nname = \"g1\"\nbodies = [\"a\", \"c\"]\n"
+                          "[[contact_groups]]\nname = \"g2\"\nbodies = [\"c\", \"a\"]\n");
+    CHECK(m.find("contact_groups[1].bodies: expected bodies in no other contact group (\"c\" is in \"g1\")") !=
+          std::string::npos);
+  }
+  SUBCASE("a body of a group named alone") {
+    const std::string m = rejection(
+        "grouped", two_blocks + contact +
+                       "[[bodies]]\nname = \"c\"\nmaterial = \"soft\"\nparticles_per_cell = 2\nmin = [0.2, 0.5]\nmax = [0.4, 0.7]\n"
+                       "[[contact_groups]]\nname = \"g\"\nbodies = [\"a\", \"c\"]\n");
+    CHECK(m.find("contacts[0].bodies: expected the name of its contact group, \"g\", for a body of a group (\"a\")") !=
+          std::string::npos);
+  }
+  SUBCASE("a rigid body in a group") {
+    const std::string m = rejection("rigid_group", two_blocks + "[[contact_groups]]\nname = \"g\"\nbodies = [\"a\", \"wall\"]\n");
+    CHECK(m.find("contact_groups[0].bodies: expected bodies that are not rigid") != std::string::npos);
   }
   SUBCASE("a negative touch fraction") {
     const std::string m = rejection("touch", two_blocks + contact + "touch_fraction = -1.0\n");

@@ -6,7 +6,7 @@
 // type given), so the shipped cases, which use every section and every
 // type, reach nearly every key; the probes below reach the rest (3D loads
 // with a combined region, a body force, a surface flux, a uniform initial
-// stress; a 3D rigid body moving along z). A key that neither reaches fails the second direction until a
+// stress; a 3D rigid body moving along z against a contact group). A key that neither reaches fails the second direction until a
 // case uses it. Not covered: the sweep file
 // (docs/reference/sweep_file.md, its own reader) and the command line
 // (cli.md).
@@ -114,7 +114,8 @@ body = "block"
 acceleration = { z = -1.0 }
 )";
 
-// A 3D rigid obstacle moving along z (the shipped 3D floor is at rest).
+// A 3D rigid obstacle moving along z (the shipped 3D floor is at rest),
+// against a contact group of two blocks.
 constexpr const char* probe_rigid = R"(
 [analysis]
 dimension = 3
@@ -133,8 +134,17 @@ poisson_ratio = 0.3
 name = "block"
 material = "m"
 min = [0.5, 0.5, 0.5]
+max = [1.0, 1.5, 1.0]
+particles_per_cell = 2
+[[bodies]]
+name = "block2"
+material = "m"
+min = [1.0, 0.5, 0.5]
 max = [1.5, 1.5, 1.0]
 particles_per_cell = 2
+[[contact_groups]]
+name = "blocks"
+bodies = ["block", "block2"]
 [[bodies]]
 name = "plate"
 rigid = { velocity = { z = -0.1 } }
@@ -142,7 +152,7 @@ min = [0.5, 0.5, 1.0]
 max = [1.5, 1.5, 1.25]
 particles_per_cell = 2
 [[contacts]]
-bodies = ["block", "plate"]
+bodies = ["blocks", "plate"]
 law = "frictionless"
 )";
 

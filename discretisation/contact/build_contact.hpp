@@ -1,6 +1,7 @@
 // The contact component of a system (contact_fields.hpp) from the spec's
 // contacts: field 0 for the bodies in no contact, then one field per
-// deformable body in a contact, in body order, then one per rigid body.
+// deformable body in a contact (per contact group: its bodies share it),
+// in body order, then one per rigid body.
 #pragma once
 #include <algorithm>
 
@@ -14,10 +15,27 @@ void build_contact(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
   ContactFields<D>& contact = system.contact.emplace();
   std::vector<int> field_of(spec.bodies.size(), 0);
   std::vector<bool> in_contact(spec.bodies.size(), false);
-  for (const ContactSpec& c : spec.contacts) in_contact[c.first] = in_contact[c.second] = true;
+  const auto group_of = [&](int b) { return spec.bodies[static_cast<std::size_t>(b)].contact_group; };
+  for (const ContactSpec& c : spec.contacts) {
+    for (int named : {c.first, c.second}) {
+      for (std::size_t b = 0; b < spec.bodies.size(); ++b) {
+        const bool same_group = group_of(named) >= 0 && group_of(static_cast<int>(b)) == group_of(named);
+        if (static_cast<int>(b) == named || same_group) in_contact[b] = true;
+      }
+    }
+  }
   int next = 1;
-  for (std::size_t b = 0; b < spec.bodies.size(); ++b)
-    if (in_contact[b] && !spec.bodies[b].rigid()) field_of[b] = next++;
+  std::vector<int> group_field(spec.contact_groups.size(), 0);
+  for (std::size_t b = 0; b < spec.bodies.size(); ++b) {
+    if (!in_contact[b] || spec.bodies[b].rigid()) continue;
+    const int g = group_of(static_cast<int>(b));
+    if (g < 0) {
+      field_of[b] = next++;
+    } else {
+      if (group_field[static_cast<std::size_t>(g)] == 0) group_field[static_cast<std::size_t>(g)] = next++;
+      field_of[b] = group_field[static_cast<std::size_t>(g)];
+    }
+  }
   const std::size_t nodes = system.grid.node_count();
   contact.deformable.resize(static_cast<std::size_t>(next - 1));
   for (NodalField<D>& f : contact.deformable) f.allocate(nodes);
@@ -37,7 +55,7 @@ void build_contact(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
     const bool swap = spec.bodies[c.first].rigid();
     const int first = field_of[swap ? c.second : c.first], second = field_of[swap ? c.first : c.second];
     ContactPair pair;
-    pair.name = spec.bodies[swap ? c.second : c.first].name + "~" + spec.bodies[swap ? c.first : c.second].name;
+    pair.name = c.names[swap ? 1 : 0] + "~" + c.names[swap ? 0 : 1];
     pair.first = std::min(first, second);
     pair.second = std::max(first, second);
     pair.law = c.law;

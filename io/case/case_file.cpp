@@ -63,6 +63,7 @@ Case read_case(const std::filesystem::path& file, const std::vector<std::string>
   std::vector<std::vector<std::string>> wins_over(bodies.size());
   for (std::size_t i = 0; i < bodies.size(); ++i) read_body(bodies[i], c.system, i, file, wins_over[i]);
   resolve_wins_over(bodies, c.system, wins_over);
+  for (TableReader& group : t.tables("contact_groups")) read_contact_group(group, c.system);
   for (TableReader& contact : t.tables("contacts")) read_contact(contact, c.system);
   check_rigid_bodies(t, c.system);
   const auto node_sets = t.tables("node_sets");

@@ -48,7 +48,9 @@ void read_body(TableReader t, SystemSpec& c, std::size_t index, const std::files
                std::vector<std::string>& wins_over);
 void resolve_wins_over(std::vector<TableReader>& tables, SystemSpec& c,
                        const std::vector<std::vector<std::string>>& names);
-// [[contacts]] k: two bodies in contact and the law between them.
+// [[contact_groups]] k: bodies that share one contact field.
+void read_contact_group(TableReader t, SystemSpec& c);
+// [[contacts]] k: two bodies (or groups) in contact and the law between them.
 void read_contact(TableReader t, SystemSpec& c);
 // Once the contacts are read: every rigid body is in one, and rigid bodies
 // only where the scene supports them.
