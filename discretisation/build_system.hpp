@@ -61,6 +61,38 @@ std::vector<std::pair<std::size_t, std::size_t>> ghost_mirror_pairs(const Discre
 
 namespace detail {
 
+// A wall on the node plane `set` (NodeSetSpec::wall): its nodes and those
+// beyond it (away from the material) within the shape function's reach.
+template <int D, class Shape>
+Wall<D> wall_of(const DiscreteSystem<D, Shape>& system, const SystemSpec& spec, const NodeSetSpec& set,
+                const std::vector<std::size_t>& plane_nodes) {
+  const int a = set.axis;
+  std::size_t below = 0, above = 0;
+  for (const auto& b : system.batches)
+    for (const auto& x : b.x) (x[a] < set.at ? below : above) += 1;
+  if (below > 0 && above > 0) {
+    throw CaseError(spec.source + ": node_sets \"" + set.name +
+                    "\": a wall needs the material on one side of its plane, and it lies on both");
+  }
+  Wall<D> w;
+  w.name = set.name;
+  w.axis = a;
+  w.outward = below == 0 ? -1.0 : 1.0;  // from the material into the wall
+  w.law = *set.wall;
+  w.velocity = set.velocity;
+  const auto& g = system.grid;
+  for (const std::size_t n : plane_nodes) {
+    w.nodes.push_back(n);
+    const Index<D> i = g.node_ijk(n);
+    for (int j = 1; j <= std::max(Shape::reach_below, Shape::reach_above); ++j) {
+      Index<D> beyond = i;
+      beyond[a] = i[a] + static_cast<int>(w.outward) * j;
+      if (beyond[a] >= 0 && beyond[a] <= g.cells[a]) w.nodes.push_back(g.node_index(beyond));
+    }
+  }
+  return w;
+}
+
 // A body's particles before its batch is made: the lattice points inside
 // its shape (each with the lattice cell's volume), or its particle file.
 inline ParticleList body_particles(const BodySpec& body, int dimension, std::optional<Lattice>& lattice) {
@@ -281,8 +313,12 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
     if (nodes.empty()) {
       throw CaseError(spec.source + ": node_sets \"" + set.name + "\": selects no grid node");
     }
-    for (int d = 0; d < D; ++d) {
-      if (set.velocity[d]) system.constraints.push_back({set.name, nodes, d, *set.velocity[d]});
+    if (set.wall) {
+      system.walls.push_back(detail::wall_of<D, Shape>(system, spec, set, nodes));
+    } else {
+      for (int d = 0; d < D; ++d) {
+        if (set.velocity[d]) system.constraints.push_back({set.name, nodes, d, *set.velocity[d]});
+      }
     }
     if (set.temperature) system.heat->prescribed.push_back({set.name, nodes, *set.temperature});
     if (set.concentration) system.solvent->prescribed.push_back({set.name, nodes, *set.concentration});

@@ -52,6 +52,23 @@ struct MirrorPlane {
   std::array<std::optional<TimeFunction>, 3> velocity;     // prescribed per axis
 };
 
+// A held plane that holds only in compression (NodeSetSpec::wall): its nodes
+// and those beyond it within the shape function's reach, the unit normal
+// out of the material into the wall (along `axis`, sign `outward`), its
+// law and velocity; the force the material put on it over the last step
+// (N; N/m in 2D) and its work on the material since t = 0 (J).
+template <int D>
+struct Wall {
+  std::string name;
+  std::vector<std::size_t> nodes;
+  int axis = 0;
+  double outward = 1.0;
+  ContactLaw law;
+  AxisFunctions velocity;
+  Vec<D> force = Vec<D>::Zero();
+  double work = 0.0;
+};
+
 // A temperature or concentration prescribed on a set of nodes.
 struct PrescribedValue {
   std::string name;
@@ -166,6 +183,7 @@ struct DiscreteSystem : SystemScalars {
   std::vector<Material> materials;
   std::vector<NodeConstraint> constraints;
   std::vector<MirrorPlane> mirror_planes;
+  std::vector<Wall<D>> walls;  // node sets that are walls
   // Transport: present only in a scene that conducts heat (diffuses
   // solvent); the particles then carry the field.
   std::optional<TransportField> heat, solvent;

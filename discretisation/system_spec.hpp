@@ -98,8 +98,13 @@ struct NodeSetSpec {
   // Prescribed temperature (K) and concentration (weight fraction) as
   // functions of time; absent = insulated (no flux through the grid edge).
   std::optional<TimeFunction> temperature, concentration;
+  // A wall (a plane only): instead of prescribing `velocity`, the plane
+  // moves with it (absent axes 0) and acts on the material by this contact
+  // law, holding it only in compression (tasks/wall.hpp).
+  std::optional<ContactLaw> wall;
 
   bool constrains_velocity() const {
+    if (wall) return false;
     for (const auto& v : velocity)
       if (v) return true;
     return false;

@@ -53,6 +53,10 @@ void visit_carried_state(System& s, F&& f) {
     f("constraint." + std::to_string(k) + ".reaction", s.constraints[k].reaction);
     f("constraint." + std::to_string(k) + ".work", s.constraints[k].work);
   }
+  for (std::size_t k = 0; k < s.walls.size(); ++k) {
+    f("wall." + std::to_string(k) + ".force", s.walls[k].force);
+    f("wall." + std::to_string(k) + ".work", s.walls[k].work);
+  }
   f("energy.kinetic", s.kinetic_energy);
   f("work.gravity", s.work.gravity);
   f("work.boundary", s.work.boundary);

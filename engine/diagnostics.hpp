@@ -88,6 +88,8 @@ Diagnostics diagnostics(const DiscreteSystem<D, Shape>& system, std::size_t body
   row.dissipated_energy += system.damping_dissipated;
   row.work = system.work;
   for (const NodeConstraint& c : system.constraints) row.reactions.push_back({c.name, c.axis, c.reaction});
+  for (const Wall<D>& w : system.walls)
+    for (int d = 0; d < D; ++d) row.reactions.push_back({w.name, d, w.force[d]});
   if (system.contact) {
     // Per pair the normal (pressing) and tangential forces on its first
     // body, per rigid body the force on it per axis and its work, and the

@@ -34,6 +34,7 @@ void add_step_energy(DiscreteSystem<D, Shape>& system) {
   system.kinetic_energy = kinetic;
   system.work.boundary = 0.0;
   for (const NodeConstraint& c : system.constraints) system.work.boundary += c.work;
+  for (const Wall<D>& w : system.walls) system.work.boundary += w.work;
   for (const SurfaceLoad<D>& load : system.loads.surface) {
     const ParticleBatch<D>& b = system.batches[load.batch];
     for (const LoadedFace<D>& f : load.faces) system.work.load += f.force.dot(b.x[f.particle] + f.offset - f.at);

@@ -161,9 +161,13 @@ double integrate_damped(DiscreteSystem<D, Shape>& system, NodalField<D>& grid) {
 }
 
 template <int D, class Shape>
+void apply_walls(DiscreteSystem<D, Shape>& system, int k);  // tasks/wall.hpp
+
+template <int D, class Shape>
 void grid_integrate(DiscreteSystem<D, Shape>& system) {
   const double dt = system.dt;
   add_external_forces(system);
+  for (Wall<D>& wall : system.walls) wall.force.setZero();
   // In a contact scene, a contact stage may have corrected the velocities
   // the stress update read (tasks/contact.hpp contact_projected): the
   // velocity change of FLIP counts from the projected momentum instead.
@@ -195,6 +199,7 @@ void grid_integrate(DiscreteSystem<D, Shape>& system) {
       });
     }
     apply_velocity_constraints(system, grid, system.t + dt);
+    if (!system.walls.empty()) apply_walls(system, k);
     add_nodal_load_work(system, k);
     // dv_I for FLIP; a held node's is that of its momentum.
     for_each_active_node(system.grid, [&](std::size_t n, const Index<D>&) {

@@ -14,6 +14,7 @@
 #include "tasks/p2g.hpp"
 #include "tasks/stage.hpp"
 #include "tasks/transport.hpp"
+#include "tasks/wall.hpp"
 
 namespace flowmpm {
 

@@ -165,6 +165,26 @@ TEST_CASE("a contact group: two halves of the block in one field slide as the bl
   CHECK(s.errors.at("displacement") < 0.02);
 }
 
+TEST_CASE("a wall: the block slides on a node plane that holds only in compression, and a dropped block bounces") {
+  CHECK(incline_error("contact/incline_block_wall.toml", {}) < 0.02);
+  // The 3D drop of configs/hard/drop_3d.toml on a frictionless wall: held,
+  // the block stays on the plane; on the wall it leaves it again.
+  const Case c = read_case(testing::config("contact/drop_3d_wall.toml"));
+  auto sim = testing::simulation<3, LinearShape>(c);
+  double highest_rise = 0.0, least_force = 0.0;
+  for (std::int64_t s = 0; s < c.time_control.steps; ++s) {
+    sim.advance();
+    double mv = 0.0, m = 0.0;
+    for (const auto& b : sim.system().batches)
+      for (std::size_t p = 0; p < b.size(); ++p) mv += b.mass[p] * b.v[p][1], m += b.mass[p];
+    highest_rise = std::max(highest_rise, mv / m);
+    least_force = std::min(least_force, -sim.system().walls.at(0).force[1]);  // the wall's push on the block
+  }
+  MESSAGE("3D drop on a wall: largest upward velocity " << highest_rise << " m/s");
+  CHECK(highest_rise > 0.5);
+  CHECK(least_force >= 0.0);  // it never pulled
+}
+
 TEST_CASE("a block on a deformable slab (Coulomb, mu = 0.2) slides as on the rigid plane") {
   CHECK(incline_error("contact/incline_block_slab.toml", {}) < 0.02);
 }
@@ -288,6 +308,18 @@ TEST_CASE("bad contact input is rejected with the file, line and key") {
   SUBCASE("a rigid body in a group") {
     const std::string m = rejection("rigid_group", two_blocks + "[[contact_groups]]\nname = \"g\"\nbodies = [\"a\", \"wall\"]\n");
     CHECK(m.find("contact_groups[0].bodies: expected bodies that are not rigid") != std::string::npos);
+  }
+  SUBCASE("a wall that is not a plane") {
+    const std::string m = rejection(
+        "wall_box", two_blocks + contact +
+                        "[[node_sets]]\nname = \"w\"\nmin = [0.0, 0.0]\nmax = [1.0, 0.1]\nwall = { law = \"frictionless\" }\n");
+    CHECK(m.find("node_sets[0].wall: expected a wall on a plane of nodes") != std::string::npos);
+  }
+  SUBCASE("a wall with material on both sides") {
+    const std::string m = rejection(
+        "wall_inside", two_blocks + contact +
+                           "[[node_sets]]\nname = \"w\"\nplane = \"x\"\nat = 0.3\nwall = { law = \"frictionless\" }\n");
+    CHECK(m.find("node_sets \"w\": a wall needs the material on one side of its plane") != std::string::npos);
   }
   SUBCASE("a negative touch fraction") {
     const std::string m = rejection("touch", two_blocks + contact + "touch_fraction = -1.0\n");

@@ -1,6 +1,7 @@
 // A body on a plane, gravity tilted by theta from the plane's normal (y)
 // towards x, in contact with the plane by the law of its [[contacts]]
-// entry (Coulomb coefficient mu; 0 frictionless). From rest, its centre of
+// entry, or else of the case's first wall node set (Coulomb coefficient
+// mu; 0 frictionless). From rest, its centre of
 // mass moves along x by (rigid-body dynamics, [Meriam 2012]):
 //   slide (a block):          s = g (sin theta - mu cos theta) t^2 / 2 when mu < tan theta, else 0;
 //   roll (a disk, plane strain, a solid cylinder):
@@ -47,7 +48,9 @@ struct Incline {
     const auto contact = std::ranges::find_if(s.contacts, [&](const ContactSpec& c) {
       return c.first == r.body || c.second == r.body;
     });
-    t.require(contact != s.contacts.end(), "body", "a body in a [[contacts]] pair (with the plane)");
+    const auto wall = std::ranges::find_if(s.node_sets, [](const NodeSetSpec& n) { return n.wall.has_value(); });
+    t.require(contact != s.contacts.end() || wall != s.node_sets.end(), "body",
+              "a body in a [[contacts]] pair with the plane, or a case with a wall node set");
     r.friction = std::visit(
         [](const auto& law) {
           using Law = std::decay_t<decltype(law)>;
@@ -55,7 +58,7 @@ struct Incline {
           if constexpr (std::is_same_v<Law, FrictionlessLaw>) return 0.0;
           return std::numeric_limits<double>::infinity();
         },
-        contact->law);
+        contact != s.contacts.end() ? contact->law : *wall->wall);
     return r;
   }
 

@@ -1,10 +1,12 @@
-// [[node_sets]]: nodes that prescribe a velocity, a temperature or a concentration.
+// [[node_sets]]: nodes that prescribe a velocity, a temperature or a
+// concentration, or a plane that is a wall (it holds only in compression).
 #include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
 
 #include "core/number_text.hpp"
+#include "core/registry.hpp"
 #include "io/case/case_limits.hpp"
 #include "io/case/case_reader.hpp"
 #include "io/case/case_sections.hpp"
@@ -55,6 +57,10 @@ void read_node_set(TableReader t, SystemSpec& c, std::size_t index) {
     s.box_max = vector_of(t, "max", c.dimension);
     if (!t.has("min") || !t.has("max")) t.fail_table("a box needs both min and max");
     for (int d = 0; d < c.dimension; ++d) t.require(s.box_min[d] <= s.box_max[d], "max", "max >= min");
+  }
+  if (t.has("wall")) {
+    t.require(s.is_plane, "wall", "a wall on a plane of nodes (plane = \"x\"|\"y\"|\"z\", at)");
+    t.read_table("wall", [&](ParameterTable& w) { s.wall = ContactLaws::read(w, "law"); });
   }
   s.temperature = transport_condition(t, "temperature", c.conducts_heat());
   s.concentration = transport_condition(t, "concentration", c.diffuses_solvent());

@@ -1,0 +1,58 @@
+// Walls (NodeSetSpec::wall, docs/guide/contact.md): a held plane that holds
+// only in compression. In grid_integrate, after the update and the
+// velocity constraints, each velocity field's nodes on the plane and
+// beyond it are treated as in contact with a rigid body moving with the
+// wall's velocity V at t + dt: r = v - V, n the unit normal out of the
+// material into the wall, and the wall's contact law gives dv(r, n) where
+// r . n > 0 (approach; `stick` everywhere, as a held node set). The
+// impulse m dv is added to the node's momentum, velocity and velocity
+// change; the wall's force (the material's on it) is -sum m dv / dt, and
+// its work on the material is sum m dv . (v_start + v_end) / 2, in the
+// energy balance with the constraints' (tasks/contact.hpp does the same
+// between bodies). Serial over the nodes, in order: deterministic.
+#pragma once
+#include "tasks/grid_update.hpp"
+
+namespace flowmpm {
+
+// The walls on velocity field k (before its dv is formed: velocity_change
+// holds the velocity at the start of the step).
+template <int D, class Shape>
+void apply_walls(DiscreteSystem<D, Shape>& system, int k) {
+  NodalField<D>& grid = system.field(k);
+  const double t = system.t + system.dt, dt = system.dt;
+  for (Wall<D>& wall : system.walls) {
+    Vec<D> V = Vec<D>::Zero(), n = Vec<D>::Zero();
+    for (int d = 0; d < D; ++d)
+      if (wall.velocity[d]) V[d] = (*wall.velocity[d])(t);
+    n[wall.axis] = wall.outward;
+    for (const std::size_t node : wall.nodes) {
+      const double m = grid.mass[node];
+      if (!(m > 0.0)) continue;
+      Vec<D> v, v_start;
+      for (int d = 0; d < D; ++d) {
+        v[d] = grid.momentum[d][node] / m;
+        v_start[d] = grid.velocity_change[d][node];
+      }
+      const Vec<D> r = v - V;
+      const Vec<D> dv = std::visit(
+          [&](const auto& law) -> Vec<D> {
+            if constexpr (std::decay_t<decltype(law)>::detects_contact) {
+              if (!(r.dot(n) > 0.0)) return Vec<D>::Zero();
+            }
+            return law.velocity_change(r, n);
+          },
+          wall.law);
+      if (dv.isZero(0.0)) continue;
+      const bool held = held_node<D, Shape>(grid, node, dt);
+      for (int d = 0; d < D; ++d) {
+        grid.momentum[d][node] += m * dv[d];
+        if (!held) grid.velocity[d][node] += dv[d];
+      }
+      wall.force -= m * dv / dt;
+      wall.work += m * dv.dot(0.5 * (v_start + v + dv));
+    }
+  }
+}
+
+}  // namespace flowmpm
