@@ -127,24 +127,17 @@ struct NodeContact {
     normal.setZero();
     if (pair_index < 0) return -r;  // fields no contact pairs stick
     const ContactPair& pair = contact.pairs[static_cast<std::size_t>(pair_index)];
-    return std::visit(
-        [&](const auto& law) -> Vec<D> {
-          if constexpr (!std::decay_t<decltype(law)>::detects_contact) {
-            return law.velocity_change(r, normal);
-          } else {
-            if (!touch(pair, n)) return Vec<D>::Zero();
-            // The normal of the body with more volume at the node: its
-            // surface there is the better resolved (a rigid body's is exact).
-            const bool from_b = contact.is_rigid(b) || contact.volume[b - 1][n] > contact.volume[a - 1][n];
-            const Vec<D> g = from_b ? Vec<D>(-gradient(b, n)) : gradient(a, n);
-            const double length = g.norm();
-            if (!(length > 0.0)) return Vec<D>::Zero();
-            normal = g / length;
-            if (!(r.dot(normal) > 0.0)) return Vec<D>::Zero();  // separating or sliding apart
-            return law.velocity_change(r, normal);
-          }
-        },
-        pair.law);
+    if (detects_contact(pair.law)) {
+      if (!touch(pair, n)) return Vec<D>::Zero();
+      // The normal of the body with more volume at the node: its surface
+      // there is the better resolved (a rigid body's is exact).
+      const bool from_b = contact.is_rigid(b) || contact.volume[b - 1][n] > contact.volume[a - 1][n];
+      const Vec<D> g = from_b ? Vec<D>(-gradient(b, n)) : gradient(a, n);
+      const double length = g.norm();
+      if (!(length > 0.0)) return Vec<D>::Zero();
+      normal = g / length;
+    }
+    return contact_velocity_change(pair.law, r, normal);
   }
 
   // Corrects node n; adds to `sums` when Updated.

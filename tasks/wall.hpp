@@ -34,15 +34,7 @@ void apply_walls(DiscreteSystem<D, Shape>& system, int k) {
         v[d] = grid.momentum[d][node] / m;
         v_start[d] = grid.velocity_change[d][node];
       }
-      const Vec<D> r = v - V;
-      const Vec<D> dv = std::visit(
-          [&](const auto& law) -> Vec<D> {
-            if constexpr (std::decay_t<decltype(law)>::detects_contact) {
-              if (!(r.dot(n) > 0.0)) return Vec<D>::Zero();
-            }
-            return law.velocity_change(r, n);
-          },
-          wall.law);
+      const Vec<D> dv = contact_velocity_change(wall.law, Vec<D>(v - V), n);
       if (dv.isZero(0.0)) continue;
       const bool held = held_node<D, Shape>(grid, node, dt);
       for (int d = 0; d < D; ++d) {

@@ -8,6 +8,7 @@
 // touch and approach (tasks/contact.hpp). Adding one is one new file and
 // one line in the variant below.
 #pragma once
+#include <type_traits>
 #include <variant>
 
 #include "core/registry.hpp"
@@ -19,5 +20,25 @@ namespace flowmpm {
 
 using ContactLaw = std::variant<StickLaw, FrictionlessLaw, CoulombLaw>;
 using ContactLaws = Registry<ContactLaw>;
+
+// Whether `law` acts only where the bodies touch and approach.
+inline bool detects_contact(const ContactLaw& law) {
+  return std::visit([](const auto& l) { return std::decay_t<decltype(l)>::detects_contact; }, law);
+}
+
+// The first body's velocity change by `law` for its relative velocity r
+// and the unit normal n out of it (tasks/contact.hpp, tasks/wall.hpp): a
+// law that detects contact acts only on approach, r . n > 0 (separating
+// or sliding apart is free); stick acts everywhere.
+template <int D>
+Vec<D> contact_velocity_change(const ContactLaw& law, const Vec<D>& r, const Vec<D>& n) {
+  return std::visit(
+      [&](const auto& l) -> Vec<D> {
+        if constexpr (std::decay_t<decltype(l)>::detects_contact)
+          if (!(r.dot(n) > 0.0)) return Vec<D>::Zero();
+        return l.velocity_change(r, n);
+      },
+      law);
+}
 
 }  // namespace flowmpm
