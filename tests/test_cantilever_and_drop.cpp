@@ -89,4 +89,11 @@ TEST_CASE("a block dropped onto a fixed base: free fall keeps the balance, the i
   MESSAGE("energy left " << (s.kinetic_energy + s.stored_energy) / s.gravity_work << " of gravity's work");
   CHECK(s.kinetic_energy + s.stored_energy <= s.gravity_work);
   CHECK(s.kinetic_energy + s.stored_energy > 0.2 * s.gravity_work);
+  // The loss is USL's, not the held nodes': their reaction never reaches
+  // the particles' velocities (FLIP's increment there is 0), so they take
+  // no energy out, and with MUSL, which does not dissipate the block's
+  // vibration, the balance closes (measured 2.1 %; docs/validation/contact.md).
+  const RunSummary musl = testing::run(read_case(testing::config("hard/drop_3d.toml"), {"analysis.scheme=musl"}));
+  MESSAGE("MUSL: energy balance error " << musl.energy_error);
+  CHECK(musl.energy_error < 0.05);
 }

@@ -110,17 +110,14 @@ TEST_CASE("mu = 0.5 on the incline: the slide against the closed form, with the 
 }
 
 TEST_CASE("a disk on the rigid incline slips as a block below mu = tan(30) / 3, and rolls above it") {
-  // Slipping (mu = 0.1): 2 %, as the block. Rolling (mu = 0.3): the centre
-  // moves 9.5 % less than g sin t^2 / 3 (the issue asks 3 %): each node
-  // the disk rolls onto loses its approach, a rolling resistance of the
-  // nodal contact (docs/validation/contact.md); bounded at 12 %, and it
-  // must roll farther than it could slide with friction at its limit.
+  // Slipping (mu = 0.1, 10 mm cells): 2 %, as the block. Rolling (mu = 0.3,
+  // 5 mm cells, the case file): the centre moves 2.5 % less than
+  // g sin t^2 / 3 (3.75 % at 10 mm): each node the disk rolls onto loses its
+  // approach, a rolling resistance of the nodal contact
+  // (docs/validation/contact.md); the issue asks 3 %.
   const std::string file = "contact/incline_disk_rigid.toml";
-  CHECK(incline_error(file, {"contacts[0].friction=0.1"}) < 0.02);
-  double rolled = 0.0;
-  CHECK(incline_error(file, {"contacts[0].friction=0.3"}, &rolled) < 0.12);
-  const double sliding_at_mu = 9.81 * (0.5 - 0.3 * std::sqrt(3.0) / 2.0) / 2.0;  // 1 s
-  CHECK(rolled > sliding_at_mu);
+  CHECK(incline_error(file, {"contacts[0].friction=0.1", "grid.cell_size=0.01", "grid.cells=[300,30]"}) < 0.02);
+  CHECK(incline_error(file, {}) < 0.03);
 }
 
 TEST_CASE("a rigid flat punch in a von Mises block: Prandtl's limit pressure, converging with the cells") {
@@ -220,27 +217,34 @@ TEST_CASE("Sulsky's disks with frictionless contact: the normal force never pull
   CHECK(contact.measures.at("kinetic_final") > 0.7);
 }
 
-TEST_CASE("a 3D block dropped on a rigid floor bounces off it") {
-  // The energy balance of this run does not close yet (about 0.7 of the
-  // largest energy with USL: docs/validation/contact.md); it is reported,
-  // not asserted.
-  const Case c = read_case(testing::config("contact/drop_3d_rigid_floor.toml"));
-  auto sim = testing::simulation<3, LinearShape>(c);
-  double highest_rise = 0.0;  // the block's largest upward mean velocity after the impact
-  for (std::int64_t s = 0; s < c.time_control.steps; ++s) {
-    sim.advance();
-    double mv = 0.0, m = 0.0;
-    for (const auto& b : sim.system().batches) {
-      if (b.body != 0) continue;
-      for (std::size_t p = 0; p < b.size(); ++p) mv += b.mass[p] * b.v[p][1], m += b.mass[p];
+TEST_CASE("a 3D block dropped on a rigid floor bounces off it, and the energy balance closes") {
+  // MUSL, half the held case's time step, touch fraction 1 (the case file
+  // says why). Without friction and with mu = 0.3 (the block's corners
+  // grip): measured 2.6 % of the largest energy present both
+  // (docs/validation/contact.md); the issue asks 5 %.
+  for (const bool friction : {false, true}) {
+    CAPTURE(friction);
+    const Case c = read_case(testing::config("contact/drop_3d_rigid_floor.toml"),
+                             friction ? std::vector<std::string>{"contacts[0].law=coulomb", "contacts[0].friction=0.3"}
+                                      : std::vector<std::string>{});
+    auto sim = testing::simulation<3, LinearShape>(c);
+    double highest_rise = 0.0;  // the block's largest upward mean velocity after the impact
+    for (std::int64_t s = 0; s < c.time_control.steps; ++s) {
+      sim.advance();
+      double mv = 0.0, m = 0.0;
+      for (const auto& b : sim.system().batches) {
+        if (b.body != 0) continue;
+        for (std::size_t p = 0; p < b.size(); ++p) mv += b.mass[p] * b.v[p][1], m += b.mass[p];
+      }
+      highest_rise = std::max(highest_rise, mv / m);
     }
-    highest_rise = std::max(highest_rise, mv / m);
+    const RunSummary r = testing::run(c);
+    MESSAGE("3D drop on a rigid floor: largest upward velocity " << highest_rise << " m/s (impact at 1.4 m/s), "
+            << "energy balance error " << r.energy_error << ", contact work " << *r.contact_work << " J");
+    CHECK(highest_rise > 0.5);  // measured 1.14 and 1.15 m/s; held, the block stays on the plane
+    CHECK(r.energy_error < 0.05);
+    CHECK(*r.contact_work < 0.0);  // the floor is at rest: the impacts only take energy out
   }
-  const RunSummary r = testing::run(c);
-  MESSAGE("3D drop on a rigid floor: largest upward velocity " << highest_rise << " m/s (impact at 1.4 m/s), "
-          << "energy balance error " << r.energy_error << ", contact work " << *r.contact_work << " J");
-  CHECK(highest_rise > 0.5);
-  CHECK(std::isfinite(*r.contact_work));
 }
 
 TEST_CASE("bad contact input is rejected with the file, line and key") {
