@@ -22,6 +22,16 @@
 //   n = -G_b / |G_b|               against a rigid body (its surface is exact),
 // G = sum_p V_p grad N_Ip pointing out of a body at its surface nodes (N_Ip
 // grows as a particle moves towards node I).
+// An interface (discretisation/contact/contact_law_interface.hpp) is a
+// force instead, applied in contact_updated wherever both fields carry
+// mass: contact_volumes also maps, for each field an interface bonds, the
+// mass-weighted displacement sum_p N_Ip m_p (x_p - X_p), X_p the initial
+// position; over the field's mass it is the nodal displacement u_kI, and
+//   [u] = u_b - u_a,  F_a = t([u], n) A_I = -F_b,  impulse F_a dt,
+// n as above, A_I = min(|G_a . n|, |G_b . n|) the interface area of node I
+// (below). It gives no velocity correction in contact_projected, and its
+// impulses do no contact work: the energy A_I (D_n [u]_n^2 + D_t |[u]_t|^2)/2
+// it stores is counted instead (ContactPair::interface_energy).
 // A node shared by more than two fields applies its pairs one after the
 // other, in field order. Each field keeps its own constraints and loads
 // (tasks/grid_update.hpp). Serial over a node's pairs, parallel over slabs
@@ -30,6 +40,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -48,21 +59,39 @@ void contact_volumes(DiscreteSystem<D, Shape>& system) {
       for (int d = 0; d < D; ++d) contact.volume_gradient[k][d][n] = 0.0;
     });
   }
+  for (auto& field : contact.displacement) {
+    if (field[0].empty()) continue;
+    for_each_active_node(grid, [&](std::size_t n, const Index<D>&) {
+      for (int d = 0; d < D; ++d) field[d][n] = 0.0;
+    });
+  }
   scatter_by_colour(system, [&](ParticleBatch<D>& b, std::uint32_t first, std::uint32_t last, std::uint32_t) {
     if (b.field == 0) return;
     double* const to_volume = contact.volume[b.field - 1].data();
     double* to_gradient[D];
     for (int d = 0; d < D; ++d) to_gradient[d] = contact.volume_gradient[b.field - 1][d].data();
-    for (std::uint32_t p = first; p < last; ++p) {
-      const Stencil<D, Shape, true> s(grid, b.x[p], b.half_width);
-      const double V = b.volume[p];
-      s.for_each_node_pair([&]<int Count>(int line, int k, std::size_t n) {
-        const auto w = s.template pair_weights<Count>(line, k);
-        store_nodes<Count>(to_volume + n, load_nodes<Count>(to_volume + n) + V * w.N);
-        for (int d = 0; d < D; ++d)
-          store_nodes<Count>(to_gradient[d] + n, load_nodes<Count>(to_gradient[d] + n) + V * w.dN[d]);
-      });
-    }
+    // With an interface: m_p (x_p - X_p) too.
+    const bool bonded = b.field <= contact.deformable_count() && !contact.displacement[b.field - 1][0].empty();
+    double* to_displacement[D];
+    for (int d = 0; d < D; ++d) to_displacement[d] = bonded ? contact.displacement[b.field - 1][d].data() : nullptr;
+    const auto scatter = [&]<bool Bonded>() {
+      for (std::uint32_t p = first; p < last; ++p) {
+        const Stencil<D, Shape, true> s(grid, b.x[p], b.half_width);
+        const double V = b.volume[p];
+        Vec<D> mu;
+        if constexpr (Bonded) mu = b.mass[p] * (b.x[p] - b.x0[p]);
+        s.for_each_node_pair([&]<int Count>(int line, int k, std::size_t n) {
+          const auto w = s.template pair_weights<Count>(line, k);
+          store_nodes<Count>(to_volume + n, load_nodes<Count>(to_volume + n) + V * w.N);
+          for (int d = 0; d < D; ++d) {
+            store_nodes<Count>(to_gradient[d] + n, load_nodes<Count>(to_gradient[d] + n) + V * w.dN[d]);
+            if constexpr (Bonded)
+              store_nodes<Count>(to_displacement[d] + n, load_nodes<Count>(to_displacement[d] + n) + mu[d] * w.N);
+          }
+        });
+      }
+    };
+    bonded ? scatter.template operator()<true>() : scatter.template operator()<false>();
   });
 }
 
@@ -73,13 +102,15 @@ template <int D>
 struct ContactSums {
   std::vector<double> normal;           // per pair: sum of -dp_a . n (N s)
   std::vector<Vec<D>> tangential;       // per pair: sum of the tangential impulses on a (N s)
+  std::vector<double> interface_energy;  // per pair: sum of A_I w([u], n) (J)
   std::vector<Vec<D>> rigid_impulse;    // per rigid body: the impulse it gave the bodies (N s)
   std::vector<double> rigid_work;       // per rigid body: dp . V (J)
-  double work = 0.0;                    // dp . (v_start + v_end) / 2 over the fields (J)
+  double work = 0.0;                    // dp . (v_start + v_end) / 2 over the fields, interfaces' dp not (J)
 
   explicit ContactSums(const ContactFields<D>& c)
       : normal(c.pairs.size(), 0.0),
         tangential(c.pairs.size(), Vec<D>::Zero()),
+        interface_energy(c.pairs.size(), 0.0),
         rigid_impulse(c.rigid.size(), Vec<D>::Zero()),
         rigid_work(c.rigid.size(), 0.0) {}
 };
@@ -94,9 +125,9 @@ struct NodeContact {
   std::vector<Vec<D>> rigid_velocity;  // per rigid body, at this stage's time
   double node_volume = 1.0;            // prod h
   // Scratch, per field: mass, velocity, velocity change so far, and (Updated)
-  // the velocity at the start of the step.
+  // the velocity at the start of the step and the interfaces' share of dv.
   std::vector<double> m;
-  std::vector<Vec<D>> v, dv, v_start;
+  std::vector<Vec<D>> v, dv, v_start, dv_bond;
 
   NodeContact(DiscreteSystem<D, Shape>& s, double time)
       : system(s),
@@ -104,7 +135,8 @@ struct NodeContact {
         m(s.field_count()),
         v(s.field_count()),
         dv(s.field_count()),
-        v_start(s.field_count()) {
+        v_start(s.field_count()),
+        dv_bond(s.field_count()) {
     for (const RigidMotion<D>& r : contact.rigid) rigid_velocity.push_back(r.at(time));
     for (int d = 0; d < D; ++d) node_volume *= s.grid.h[d];
   }
@@ -120,6 +152,18 @@ struct NodeContact {
     return g;
   }
 
+  // The unit normal out of a at node n, that of the body with more volume
+  // there: its surface is the better resolved (a rigid body's is exact).
+  // False where that body's gradient vanishes.
+  bool outward_normal(int a, int b, std::size_t n, Vec<D>& normal) const {
+    const bool from_b = contact.is_rigid(b) || contact.volume[b - 1][n] > contact.volume[a - 1][n];
+    const Vec<D> g = from_b ? Vec<D>(-gradient(b, n)) : gradient(a, n);
+    const double length = g.norm();
+    if (!(length > 0.0)) return false;
+    normal = g / length;
+    return true;
+  }
+
   // The law's velocity change of field a for relative velocity r: the
   // whole of -r for stick; else only where the pair touches and approaches.
   // Sets `normal` (zero for stick).
@@ -129,15 +173,31 @@ struct NodeContact {
     const ContactPair& pair = contact.pairs[static_cast<std::size_t>(pair_index)];
     if (detects_contact(pair.law)) {
       if (!touch(pair, n)) return Vec<D>::Zero();
-      // The normal of the body with more volume at the node: its surface
-      // there is the better resolved (a rigid body's is exact).
-      const bool from_b = contact.is_rigid(b) || contact.volume[b - 1][n] > contact.volume[a - 1][n];
-      const Vec<D> g = from_b ? Vec<D>(-gradient(b, n)) : gradient(a, n);
-      const double length = g.norm();
-      if (!(length > 0.0)) return Vec<D>::Zero();
-      normal = g / length;
+      if (!outward_normal(a, b, n, normal)) return Vec<D>::Zero();
     }
     return contact_velocity_change(pair.law, r, normal);
+  }
+
+  // The nodal displacement of field k (an interface bonds it).
+  Vec<D> displacement(int k, std::size_t n) const {
+    Vec<D> u;
+    for (int d = 0; d < D; ++d) u[d] = contact.displacement[k - 1][d][n] / m[k];
+    return u;
+  }
+
+  // The impulse of interface `law` on field a at node n over the step, and
+  // its stored energy A_I w([u], n) (J), added to `energy`; sets `normal`.
+  // The area is that of the face both bodies present: G_k . n integrates
+  // N_I over body k's surface near I (h^(D-1) N_I there on a face along
+  // the grid, whatever the shape function), and the smaller of the two is
+  // the part they share (half of h at the node where one body ends on the
+  // other's face).
+  Vec<D> bond_impulse(const InterfaceLaw& law, int a, int b, std::size_t n, Vec<D>& normal, double& energy) const {
+    if (!outward_normal(a, b, n, normal)) return Vec<D>::Zero();
+    const double area = std::min(std::abs(gradient(a, n).dot(normal)), std::abs(gradient(b, n).dot(normal)));
+    const Vec<D> jump = displacement(b, n) - displacement(a, n);
+    energy += area * law.energy(jump, normal);
+    return (area * system.dt) * law.traction(jump, normal);
   }
 
   // Corrects node n; adds to `sums` when Updated.
@@ -154,6 +214,7 @@ struct NodeContact {
         if constexpr (Updated) v_start[k][d] = v[k][d] - f.velocity_change[d][n];
       }
       dv[k].setZero();
+      if constexpr (Updated) dv_bond[k].setZero();
     }
     bool rigid_here = false;
     for (std::size_t r = 0; r < contact.rigid.size(); ++r)
@@ -165,9 +226,25 @@ struct NodeContact {
       // Deformable pairs.
       for (int b = a + 1; b < fields; ++b) {
         if (!(m[b] > 0.0)) continue;
+        const int pair = contact.pair_index(a, b);
+        if (pair >= 0) {
+          const ContactPair& p = contact.pairs[static_cast<std::size_t>(pair)];
+          if (const auto* law = std::get_if<InterfaceLaw>(&p.law)) {
+            // A force: in contact_updated only.
+            if constexpr (Updated) {
+              const Vec<D> impulse =
+                  bond_impulse(*law, a, b, n, normal, sums.interface_energy[static_cast<std::size_t>(pair)]);
+              dv[a] += impulse / m[a];
+              dv[b] -= impulse / m[b];
+              dv_bond[a] += impulse / m[a];
+              dv_bond[b] -= impulse / m[b];
+              add_pair_sums(sums, static_cast<std::size_t>(pair), impulse, normal);
+            }
+            continue;
+          }
+        }
         const Vec<D> va = v[a] + dv[a], vb = v[b] + dv[b];
         const Vec<D> r = (m[b] / (m[a] + m[b])) * (va - vb);  // v_a - v_cm
-        const int pair = contact.pair_index(a, b);
         const Vec<D> change_a = this->change(pair, a, b, n, r, normal);
         if (change_a.isZero(0.0)) continue;
         const Vec<D> impulse = m[a] * change_a;
@@ -200,8 +277,9 @@ struct NodeContact {
       NodalField<D>& f = system.field(k);
       if constexpr (Updated) {
         // The contact's impulse on the field times the mean of its velocity
-        // at the start and at the end of the step.
-        sums.work += m[k] * dv[k].dot(0.5 * (v_start[k] + v[k] + dv[k]));
+        // at the start and at the end of the step; an interface's work is
+        // its stored energy's change instead.
+        sums.work += m[k] * (dv[k] - dv_bond[k]).dot(0.5 * (v_start[k] + v[k] + dv[k]));
         const bool held = held_node<D, Shape>(f, n, system.dt);
         for (int d = 0; d < D; ++d) {
           f.momentum[d][n] += m[k] * dv[k][d];
@@ -255,6 +333,7 @@ void contact_updated(DiscreteSystem<D, Shape>& system) {
     for (std::size_t i = 0; i < contact.pairs.size(); ++i) {
       total.normal[i] += s.normal[i];
       total.tangential[i] += s.tangential[i];
+      total.interface_energy[i] += s.interface_energy[i];
     }
     for (std::size_t r = 0; r < contact.rigid.size(); ++r) {
       total.rigid_impulse[r] += s.rigid_impulse[r];
@@ -265,6 +344,7 @@ void contact_updated(DiscreteSystem<D, Shape>& system) {
   for (std::size_t i = 0; i < contact.pairs.size(); ++i) {
     contact.pairs[i].normal_force = total.normal[i] / dt;
     contact.pairs[i].tangential_force = total.tangential[i].norm() / dt;
+    contact.pairs[i].interface_energy = total.interface_energy[i];
   }
   for (std::size_t r = 0; r < contact.rigid.size(); ++r) {
     contact.rigid[r].force = -total.rigid_impulse[r] / dt;  // on the rigid body

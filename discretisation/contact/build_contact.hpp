@@ -63,6 +63,13 @@ void build_contact(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
     contact.pair_of[static_cast<std::size_t>(pair.first * next + pair.second)] = static_cast<int>(contact.pairs.size());
     contact.pairs.push_back(std::move(pair));
   }
+  // The nodal displacements of the fields an interface bonds (both deformable).
+  contact.displacement.resize(contact.deformable.size());
+  for (const ContactPair& pair : contact.pairs) {
+    if (!is_interface(pair.law)) continue;
+    for (const int field : {pair.first, pair.second})
+      for (auto& component : contact.displacement[static_cast<std::size_t>(field - 1)]) component.assign(nodes, 0.0);
+  }
   for (auto& batch : system.batches) batch.field = field_of[static_cast<std::size_t>(batch.body)];
 }
 

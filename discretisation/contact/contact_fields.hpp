@@ -27,8 +27,11 @@ struct ContactPair {
   // of each, fill at least this fraction of the node's volume (prod h).
   double touch_fraction = 0.6;
   // Over the last step, on the first body (N; N/m in 2D): the normal force
-  // (>= 0 pressing) and the tangential force's magnitude.
+  // (>= 0 pressing; an interface in tension pulls, < 0) and the tangential
+  // force's magnitude.
   double normal_force = 0.0, tangential_force = 0.0;
+  // An interface's stored energy at the start of the last step (J; J/m in 2D).
+  double interface_energy = 0.0;
 };
 
 // A rigid body: its velocity (per axis, absent = 0), the force the bodies
@@ -59,6 +62,11 @@ struct ContactFields {
   // at its surface nodes (the normals).
   std::vector<std::vector<double>> volume;
   std::vector<VectorField> volume_gradient;
+  // Per deformable field k at [k - 1], only for a field in an interface
+  // pair (empty otherwise): sum_p N_Ip m_p (x_p - X_p), the mass-weighted
+  // displacement since t = 0 (kg m), which over the field's mass is its
+  // nodal displacement.
+  std::vector<VectorField> displacement;
   std::vector<ContactPair> pairs;
   // contact_law[a * fields + b]: the index into pairs of fields a < b, -1
   // for stick (fields = 1 + K + R).
