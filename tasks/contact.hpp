@@ -24,9 +24,9 @@
 // grows as a particle moves towards node I).
 // An interface (discretisation/contact/contact_law_interface.hpp) is a
 // force instead, applied in contact_updated wherever both fields carry
-// mass: contact_volumes also maps, for each field an interface bonds, the
-// mass-weighted displacement sum_p N_Ip m_p (x_p - X_p), X_p the initial
-// position; over the field's mass it is the nodal displacement u_kI, and
+// mass: contact_volumes also maps, for each field an interface bonds,
+// sum_p N_Ip V_p (x_p - X_p), X_p the initial position; over V_kI it is the
+// nodal displacement u_kI, a volume-weighted mean of the particles', and
 //   [u] = u_b - u_a,  F_a = t([u], n) A_I = -F_b,  impulse F_a dt,
 // n as above, A_I = min(|G_a . n|, |G_b . n|) the interface area of node I
 // (below). It gives no velocity correction in contact_projected, and its
@@ -70,7 +70,7 @@ void contact_volumes(DiscreteSystem<D, Shape>& system) {
     double* const to_volume = contact.volume[b.field - 1].data();
     double* to_gradient[D];
     for (int d = 0; d < D; ++d) to_gradient[d] = contact.volume_gradient[b.field - 1][d].data();
-    // With an interface: m_p (x_p - X_p) too.
+    // With an interface: V_p (x_p - X_p) too.
     const bool bonded = b.field <= contact.deformable_count() && !contact.displacement[b.field - 1][0].empty();
     double* to_displacement[D];
     for (int d = 0; d < D; ++d) to_displacement[d] = bonded ? contact.displacement[b.field - 1][d].data() : nullptr;
@@ -78,15 +78,15 @@ void contact_volumes(DiscreteSystem<D, Shape>& system) {
       for (std::uint32_t p = first; p < last; ++p) {
         const Stencil<D, Shape, true> s(grid, b.x[p], b.half_width);
         const double V = b.volume[p];
-        Vec<D> mu;
-        if constexpr (Bonded) mu = b.mass[p] * (b.x[p] - b.x0[p]);
+        Vec<D> Vu;
+        if constexpr (Bonded) Vu = V * (b.x[p] - b.x0[p]);
         s.for_each_node_pair([&]<int Count>(int line, int k, std::size_t n) {
           const auto w = s.template pair_weights<Count>(line, k);
           store_nodes<Count>(to_volume + n, load_nodes<Count>(to_volume + n) + V * w.N);
           for (int d = 0; d < D; ++d) {
             store_nodes<Count>(to_gradient[d] + n, load_nodes<Count>(to_gradient[d] + n) + V * w.dN[d]);
             if constexpr (Bonded)
-              store_nodes<Count>(to_displacement[d] + n, load_nodes<Count>(to_displacement[d] + n) + mu[d] * w.N);
+              store_nodes<Count>(to_displacement[d] + n, load_nodes<Count>(to_displacement[d] + n) + Vu[d] * w.N);
           }
         });
       }
@@ -178,10 +178,11 @@ struct NodeContact {
     return contact_velocity_change(pair.law, r, normal);
   }
 
-  // The nodal displacement of field k (an interface bonds it).
+  // The nodal displacement of field k (an interface bonds it): both sums
+  // from contact_volumes, whatever p2g folds into the nodal mass.
   Vec<D> displacement(int k, std::size_t n) const {
     Vec<D> u;
-    for (int d = 0; d < D; ++d) u[d] = contact.displacement[k - 1][d][n] / m[k];
+    for (int d = 0; d < D; ++d) u[d] = contact.displacement[k - 1][d][n] / contact.volume[k - 1][n];
     return u;
   }
 

@@ -308,7 +308,7 @@ TEST_CASE("two poplar strands bonded by an interface in lap shear: the joint's s
   // 0.25 mm cells (2 and 4 through each strand): P / delta against
   // Volkersen's shear-lag joint with the strands' shear compliance, within
   // 5 % (the issue's tolerance); measured 0.9 % and 0.5 %, the error of the
-  // nodal displacement (a mass-weighted mean, 3 h / 8 inside each strand:
+  // nodal displacement (a volume-weighted mean, 3 h / 8 inside each strand:
   // docs/validation/contact.md), which halves with the cell. Quasi-static:
   // the kinetic energy at the end is below 1e-3 of the stored energy.
   const std::string file = "contact/lap_shear_interface.toml";

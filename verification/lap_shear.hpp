@@ -3,23 +3,23 @@
 // free end, the other pulled along x at its free end; 2D plane stress, the
 // strands kept from bending (a node set holds y over both), as the
 // shear-lag model assumes. Closed form: Volkersen's shear-lag lap joint
-// ([Volkersen 1938]; [da Silva 2009] eqs. 1-3) with the adhesive layer's
+// ([Volkersen 1938]; [da Silva 2009]) with the adhesive layer's
 // G_a / t_a replaced by the interface stiffness, and the strands' own
 // shear compliance added to it ([Tsai 1998]: the shear stress falls
 // linearly from the interface to the strand's free face, so the interface
 // moves t / (3 G) tau past the strand's mean displacement):
 //   1 / D = 1 / D_t + t_1 / (3 G_1) + t_2 / (3 G_2),
 //   alpha_i = 1 / (Q_i t_i),  lambda^2 = D (alpha_1 + alpha_2),
-//   delta / P = alpha_h a_h + alpha_p a_p
+//   delta / P = alpha_1 a_1 + alpha_2 a_2
 //             + [ (2 alpha_1 alpha_2 + (alpha_1^2 + alpha_2^2) cosh lambda L) / (lambda sinh lambda L)
 //                 + alpha_1 alpha_2 L ] / (alpha_1 + alpha_2),
 // P the load per unit width (N/m), delta the pulled end's displacement
-// relative to the held end, a_h and a_p the free lengths of the held and
-// the pulled strand outside the overlap, t_i the thicknesses (along y),
+// relative to the held end, a_i strand i's free length outside the
+// overlap, t_i the thicknesses (along y),
 // Q_i = E_x / (1 - nu_xy nu_yx) the axial stiffness of a strand held in y
 // in plane stress and G_i = G_xy (orthotropic with its axes unturned, or
 // linear elastic). The limits: a perfect bond (lambda -> inf) gives the
-// overlap's L / (Q t_1 + Q t_2) for equal strands; D -> 0 gives 1 / (D L).
+// overlap's L / (Q_1 t_1 + Q_2 t_2); D -> 0 gives 1 / (D L).
 // P is the mean of the pull on the pulled end and the hold's reaction
 // (their difference is the strands' inertia), delta the integral of the
 // two node sets' prescribed velocities along x. Error, at the last sample:

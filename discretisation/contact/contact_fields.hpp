@@ -63,9 +63,9 @@ struct ContactFields {
   std::vector<std::vector<double>> volume;
   std::vector<VectorField> volume_gradient;
   // Per deformable field k at [k - 1], only for a field in an interface
-  // pair (empty otherwise): sum_p N_Ip m_p (x_p - X_p), the mass-weighted
-  // displacement since t = 0 (kg m), which over the field's mass is its
-  // nodal displacement.
+  // pair (empty otherwise): sum_p N_Ip V_p (x_p - X_p), X_p the initial
+  // position (m^4; m^3 in 2D), which over its volume is the field's nodal
+  // displacement.
   std::vector<VectorField> displacement;
   std::vector<ContactPair> pairs;
   // contact_law[a * fields + b]: the index into pairs of fields a < b, -1
