@@ -109,16 +109,20 @@ struct InterfaceStep {
 };
 
 // An interface (discretisation/contact/contact_law_interface.hpp) ties the
-// nodal masses m_a, m_b of its two bodies at a node by a spring
-// k = D A_I, and the central difference is stable for that pair alone while
+// masses m_a, m_b of its two bodies at a node by a spring k = D A_I, and
+// the central difference is stable for that pair alone while
 // dt <= 2 / sqrt(k (1 / m_a + 1 / m_b)) ([Belytschko 2000]). Estimated from
 // the initial state at a node of a face along the grid, where the interface
-// area is A_I = h^(D-1) and each body holds half the node's volume,
-// m = rho h^D / 2 (h the smallest cell; D the larger of D_n and D_t; rho
-// the lightest material on each side):
-//   dt_i = sqrt(2 h / (D (1 / rho_a + 1 / rho_b))),
+// area is A_I = h^(D-1), with m = rho h^D / 4 on each side (h the smallest
+// cell; D the larger of D_n and D_t; rho the lightest material on each
+// side):
+//   dt_i = sqrt(h / (D (1 / rho_a + 1 / rho_b))),
 // taken with the wave limit's margin; the smallest over the interfaces.
-// None without interfaces.
+// The node holds rho h^D / 2 of each body, but the interface's displacement
+// fit reads the particle row next to the face with weights up to 1.5, and
+// two bonded blocks (linear shape functions, 2 particles per cell) blow up
+// from 0.85 of the limit with the whole nodal mass: a quarter keeps a
+// margin (docs/theory/contact.md). None without interfaces.
 inline std::optional<InterfaceStep> interface_time_step(const SystemSpec& spec) {
   double h_min = std::numeric_limits<double>::infinity();
   for (int d = 0; d < spec.dimension; ++d) h_min = std::min(h_min, spec.grid.cell_size[d]);
@@ -139,7 +143,7 @@ inline std::optional<InterfaceStep> interface_time_step(const SystemSpec& spec) 
     const double stiffness = std::max(law->normal_stiffness, law->tangential_stiffness);
     if (!(stiffness > 0.0)) continue;
     const double rho_a = lightest(c.first), rho_b = lightest(c.second);
-    const double dt = stability_margin * std::sqrt(2.0 * h_min / (stiffness * (1.0 / rho_a + 1.0 / rho_b)));
+    const double dt = stability_margin * std::sqrt(h_min / (stiffness * (1.0 / rho_a + 1.0 / rho_b)));
     if (!result || dt < result->dt) result = InterfaceStep{dt, c.names[0] + "~" + c.names[1], stiffness, rho_a, rho_b};
   }
   return result;

@@ -45,7 +45,7 @@ TimeStep::TimeStep(const SystemSpec& spec, const Scheme& scheme, const TimeContr
       const InterfaceStep& i = *limits_.interface;
       mechanical = "1 / sqrt(1 / dt_w^2 + 1 / dt_i^2) = " + readable_text(limits_.mechanical_dt()) + " s with " +
                    mechanical + " and the interface limit of contact \"" + i.contact + "\" " +
-                   readable_text(stability_margin) + " sqrt(2 h / (D (1 / rho_a + 1 / rho_b))) = " +
+                   readable_text(stability_margin) + " sqrt(h / (D (1 / rho_a + 1 / rho_b))) = " +
                    readable_text(i.dt) + " s (D " + readable_text(i.stiffness) + " Pa/m, rho " +
                    readable_text(i.density_a) + " and " + readable_text(i.density_b) + " kg/m^3)";
     }

@@ -2,7 +2,9 @@
 // (discretisation/contact/contact_fields.hpp):
 //   contact_volumes:   per contact field k, V_kI = sum_p N_Ip V_p and its
 //                      gradient G_kI = sum_p V_p grad N_Ip, from the
-//                      particles at the start of the step;
+//                      particles at the start of the step, and for a field
+//                      an interface bonds the sums of its displacement fit
+//                      (interface_displacement.hpp);
 //   contact_projected: after a grid_velocity whose velocities the stress
 //                      update reads (USF, and MUSL's second projection): the
 //                      contact laws applied to those velocities;
@@ -22,16 +24,9 @@
 //   n = -G_b / |G_b|               against a rigid body (its surface is exact),
 // G = sum_p V_p grad N_Ip pointing out of a body at its surface nodes (N_Ip
 // grows as a particle moves towards node I).
-// An interface (discretisation/contact/contact_law_interface.hpp) is a
-// force instead, applied in contact_updated wherever both fields carry
-// mass: contact_volumes also maps, for each field an interface bonds,
-// sum_p N_Ip V_p (x_p - X_p), X_p the initial position; over V_kI it is the
-// nodal displacement u_kI, a volume-weighted mean of the particles', and
-//   [u] = u_b - u_a,  F_a = t([u], n) A_I = -F_b,  impulse F_a dt,
-// n as above, A_I = min(|G_a . n|, |G_b . n|) the interface area of node I
-// (below). It gives no velocity correction in contact_projected, and its
-// impulses do no contact work: the energy A_I (D_n [u]_n^2 + D_t |[u]_t|^2)/2
-// it stores is counted instead (ContactPair::interface_energy).
+// An interface (contact_law_interface.hpp) changes no velocity here: it is
+// a force, added to the fields' nodal forces before grid_integrate
+// (tasks/contact_bonds.hpp); contact_volumes maps what it needs.
 // A node shared by more than two fields applies its pairs one after the
 // other, in field order. Each field keeps its own constraints and loads
 // (tasks/grid_update.hpp). Serial over a node's pairs, parallel over slabs
@@ -40,7 +35,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
-#include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -60,9 +55,9 @@ void contact_volumes(DiscreteSystem<D, Shape>& system) {
     });
   }
   for (auto& field : contact.displacement) {
-    if (field[0].empty()) continue;
+    if (field.empty()) continue;
     for_each_active_node(grid, [&](std::size_t n, const Index<D>&) {
-      for (int d = 0; d < D; ++d) field[d][n] = 0.0;
+      for (auto& s : field.sum) s[n] = 0.0;
     });
   }
   scatter_by_colour(system, [&](ParticleBatch<D>& b, std::uint32_t first, std::uint32_t last, std::uint32_t) {
@@ -70,24 +65,28 @@ void contact_volumes(DiscreteSystem<D, Shape>& system) {
     double* const to_volume = contact.volume[b.field - 1].data();
     double* to_gradient[D];
     for (int d = 0; d < D; ++d) to_gradient[d] = contact.volume_gradient[b.field - 1][d].data();
-    // With an interface: V_p (x_p - X_p) too.
-    const bool bonded = b.field <= contact.deformable_count() && !contact.displacement[b.field - 1][0].empty();
-    double* to_displacement[D];
-    for (int d = 0; d < D; ++d) to_displacement[d] = bonded ? contact.displacement[b.field - 1][d].data() : nullptr;
+    // With an interface: sum_p N_Ip V_p q_p too, q the terms of the displacement fit.
+    using Fit = InterfaceDisplacement<D>;
+    const bool bonded = b.field <= contact.deformable_count() && !contact.displacement[b.field - 1].empty();
+    double* to_fit[Fit::terms];
+    for (int t = 0; t < Fit::terms; ++t) to_fit[t] = bonded ? contact.displacement[b.field - 1].sum[t].data() : nullptr;
     const auto scatter = [&]<bool Bonded>() {
       for (std::uint32_t p = first; p < last; ++p) {
         const Stencil<D, Shape, true> s(grid, b.x[p], b.half_width);
         const double V = b.volume[p];
-        Vec<D> Vu;
-        if constexpr (Bonded) Vu = V * (b.x[p] - b.x0[p]);
+        std::array<double, Fit::terms> Vq;
+        if constexpr (Bonded) {
+          Vq = Fit::particle_terms(Vec<D>(b.x[p] - grid.origin), Vec<D>(b.x[p] - b.x0[p]));
+          for (double& q : Vq) q *= V;
+        }
         s.for_each_node_pair([&]<int Count>(int line, int k, std::size_t n) {
           const auto w = s.template pair_weights<Count>(line, k);
           store_nodes<Count>(to_volume + n, load_nodes<Count>(to_volume + n) + V * w.N);
-          for (int d = 0; d < D; ++d) {
+          for (int d = 0; d < D; ++d)
             store_nodes<Count>(to_gradient[d] + n, load_nodes<Count>(to_gradient[d] + n) + V * w.dN[d]);
-            if constexpr (Bonded)
-              store_nodes<Count>(to_displacement[d] + n, load_nodes<Count>(to_displacement[d] + n) + Vu[d] * w.N);
-          }
+          if constexpr (Bonded)
+            for (int t = 0; t < Fit::terms; ++t)
+              store_nodes<Count>(to_fit[t] + n, load_nodes<Count>(to_fit[t] + n) + Vq[t] * w.N);
         });
       }
     };
@@ -102,15 +101,13 @@ template <int D>
 struct ContactSums {
   std::vector<double> normal;           // per pair: sum of -dp_a . n (N s)
   std::vector<Vec<D>> tangential;       // per pair: sum of the tangential impulses on a (N s)
-  std::vector<double> interface_energy;  // per pair: sum of A_I w([u], n) (J)
   std::vector<Vec<D>> rigid_impulse;    // per rigid body: the impulse it gave the bodies (N s)
   std::vector<double> rigid_work;       // per rigid body: dp . V (J)
-  double work = 0.0;                    // dp . (v_start + v_end) / 2 over the fields, interfaces' dp not (J)
+  double work = 0.0;                    // dp . (v_start + v_end) / 2 over the fields (J)
 
   explicit ContactSums(const ContactFields<D>& c)
       : normal(c.pairs.size(), 0.0),
         tangential(c.pairs.size(), Vec<D>::Zero()),
-        interface_energy(c.pairs.size(), 0.0),
         rigid_impulse(c.rigid.size(), Vec<D>::Zero()),
         rigid_work(c.rigid.size(), 0.0) {}
 };
@@ -125,9 +122,9 @@ struct NodeContact {
   std::vector<Vec<D>> rigid_velocity;  // per rigid body, at this stage's time
   double node_volume = 1.0;            // prod h
   // Scratch, per field: mass, velocity, velocity change so far, and (Updated)
-  // the velocity at the start of the step and the interfaces' share of dv.
+  // the velocity at the start of the step.
   std::vector<double> m;
-  std::vector<Vec<D>> v, dv, v_start, dv_bond;
+  std::vector<Vec<D>> v, dv, v_start;
 
   NodeContact(DiscreteSystem<D, Shape>& s, double time)
       : system(s),
@@ -135,8 +132,7 @@ struct NodeContact {
         m(s.field_count()),
         v(s.field_count()),
         dv(s.field_count()),
-        v_start(s.field_count()),
-        dv_bond(s.field_count()) {
+        v_start(s.field_count()) {
     for (const RigidMotion<D>& r : contact.rigid) rigid_velocity.push_back(r.at(time));
     for (int d = 0; d < D; ++d) node_volume *= s.grid.h[d];
   }
@@ -144,24 +140,6 @@ struct NodeContact {
   bool touch(const ContactPair& pair, std::size_t n) const {
     return contact.volume[pair.first - 1][n] + contact.volume[pair.second - 1][n] >=
            pair.touch_fraction * node_volume;
-  }
-
-  Vec<D> gradient(int field, std::size_t n) const {
-    Vec<D> g;
-    for (int d = 0; d < D; ++d) g[d] = contact.volume_gradient[field - 1][d][n];
-    return g;
-  }
-
-  // The unit normal out of a at node n, that of the body with more volume
-  // there: its surface is the better resolved (a rigid body's is exact).
-  // False where that body's gradient vanishes.
-  bool outward_normal(int a, int b, std::size_t n, Vec<D>& normal) const {
-    const bool from_b = contact.is_rigid(b) || contact.volume[b - 1][n] > contact.volume[a - 1][n];
-    const Vec<D> g = from_b ? Vec<D>(-gradient(b, n)) : gradient(a, n);
-    const double length = g.norm();
-    if (!(length > 0.0)) return false;
-    normal = g / length;
-    return true;
   }
 
   // The law's velocity change of field a for relative velocity r: the
@@ -173,32 +151,9 @@ struct NodeContact {
     const ContactPair& pair = contact.pairs[static_cast<std::size_t>(pair_index)];
     if (detects_contact(pair.law)) {
       if (!touch(pair, n)) return Vec<D>::Zero();
-      if (!outward_normal(a, b, n, normal)) return Vec<D>::Zero();
+      if (!contact.outward_normal(a, b, n, normal)) return Vec<D>::Zero();
     }
     return contact_velocity_change(pair.law, r, normal);
-  }
-
-  // The nodal displacement of field k (an interface bonds it): both sums
-  // from contact_volumes, whatever p2g folds into the nodal mass.
-  Vec<D> displacement(int k, std::size_t n) const {
-    Vec<D> u;
-    for (int d = 0; d < D; ++d) u[d] = contact.displacement[k - 1][d][n] / contact.volume[k - 1][n];
-    return u;
-  }
-
-  // The impulse of interface `law` on field a at node n over the step, and
-  // its stored energy A_I w([u], n) (J), added to `energy`; sets `normal`.
-  // The area is that of the face both bodies present: G_k . n integrates
-  // N_I over body k's surface near I (h^(D-1) N_I there on a face along
-  // the grid, whatever the shape function), and the smaller of the two is
-  // the part they share (half of h at the node where one body ends on the
-  // other's face).
-  Vec<D> bond_impulse(const InterfaceLaw& law, int a, int b, std::size_t n, Vec<D>& normal, double& energy) const {
-    if (!outward_normal(a, b, n, normal)) return Vec<D>::Zero();
-    const double area = std::min(std::abs(gradient(a, n).dot(normal)), std::abs(gradient(b, n).dot(normal)));
-    const Vec<D> jump = displacement(b, n) - displacement(a, n);
-    energy += area * law.energy(jump, normal);
-    return (area * system.dt) * law.traction(jump, normal);
   }
 
   // Corrects node n; adds to `sums` when Updated.
@@ -215,7 +170,6 @@ struct NodeContact {
         if constexpr (Updated) v_start[k][d] = v[k][d] - f.velocity_change[d][n];
       }
       dv[k].setZero();
-      if constexpr (Updated) dv_bond[k].setZero();
     }
     bool rigid_here = false;
     for (std::size_t r = 0; r < contact.rigid.size(); ++r)
@@ -228,22 +182,7 @@ struct NodeContact {
       for (int b = a + 1; b < fields; ++b) {
         if (!(m[b] > 0.0)) continue;
         const int pair = contact.pair_index(a, b);
-        if (pair >= 0) {
-          const ContactPair& p = contact.pairs[static_cast<std::size_t>(pair)];
-          if (const auto* law = std::get_if<InterfaceLaw>(&p.law)) {
-            // A force: in contact_updated only.
-            if constexpr (Updated) {
-              const Vec<D> impulse =
-                  bond_impulse(*law, a, b, n, normal, sums.interface_energy[static_cast<std::size_t>(pair)]);
-              dv[a] += impulse / m[a];
-              dv[b] -= impulse / m[b];
-              dv_bond[a] += impulse / m[a];
-              dv_bond[b] -= impulse / m[b];
-              add_pair_sums(sums, static_cast<std::size_t>(pair), impulse, normal);
-            }
-            continue;
-          }
-        }
+        if (pair >= 0 && is_interface(contact.pairs[static_cast<std::size_t>(pair)].law)) continue;
         const Vec<D> va = v[a] + dv[a], vb = v[b] + dv[b];
         const Vec<D> r = (m[b] / (m[a] + m[b])) * (va - vb);  // v_a - v_cm
         const Vec<D> change_a = this->change(pair, a, b, n, r, normal);
@@ -278,9 +217,8 @@ struct NodeContact {
       NodalField<D>& f = system.field(k);
       if constexpr (Updated) {
         // The contact's impulse on the field times the mean of its velocity
-        // at the start and at the end of the step; an interface's work is
-        // its stored energy's change instead.
-        sums.work += m[k] * (dv[k] - dv_bond[k]).dot(0.5 * (v_start[k] + v[k] + dv[k]));
+        // at the start and at the end of the step.
+        sums.work += m[k] * dv[k].dot(0.5 * (v_start[k] + v[k] + dv[k]));
         const bool held = held_node<D, Shape>(f, n, system.dt);
         for (int d = 0; d < D; ++d) {
           f.momentum[d][n] += m[k] * dv[k][d];
@@ -334,7 +272,6 @@ void contact_updated(DiscreteSystem<D, Shape>& system) {
     for (std::size_t i = 0; i < contact.pairs.size(); ++i) {
       total.normal[i] += s.normal[i];
       total.tangential[i] += s.tangential[i];
-      total.interface_energy[i] += s.interface_energy[i];
     }
     for (std::size_t r = 0; r < contact.rigid.size(); ++r) {
       total.rigid_impulse[r] += s.rigid_impulse[r];
@@ -343,9 +280,9 @@ void contact_updated(DiscreteSystem<D, Shape>& system) {
     total.work += s.work;
   }
   for (std::size_t i = 0; i < contact.pairs.size(); ++i) {
+    if (is_interface(contact.pairs[i].law)) continue;  // its forces are contact_bonds'
     contact.pairs[i].normal_force = total.normal[i] / dt;
     contact.pairs[i].tangential_force = total.tangential[i].norm() / dt;
-    contact.pairs[i].interface_energy = total.interface_energy[i];
   }
   for (std::size_t r = 0; r < contact.rigid.size(); ++r) {
     contact.rigid[r].force = -total.rigid_impulse[r] / dt;  // on the rigid body

@@ -67,8 +67,7 @@ void build_contact(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
   contact.displacement.resize(contact.deformable.size());
   for (const ContactPair& pair : contact.pairs) {
     if (!is_interface(pair.law)) continue;
-    for (const int field : {pair.first, pair.second})
-      for (auto& component : contact.displacement[static_cast<std::size_t>(field - 1)]) component.assign(nodes, 0.0);
+    for (const int field : {pair.first, pair.second}) contact.displacement[static_cast<std::size_t>(field - 1)].allocate(nodes);
   }
   for (auto& batch : system.batches) batch.field = field_of[static_cast<std::size_t>(batch.body)];
 }

@@ -7,9 +7,10 @@
 // (D_n [u]_n^2 + D_t |[u]_t|^2) / 2 per unit area. Bonded: it acts
 // wherever both bodies carry mass at a node, in tension and in compression
 // alike (NairnMPM hands the normal in compression to contact instead),
-// never lets go, and changes no velocity by itself: it is a force
-// (tasks/contact.hpp). D -> infinity is a perfect bond (stick), D = 0 no
-// bond at all.
+// never lets go, and changes no velocity by itself: it is a force added to
+// the nodal forces (tasks/contact_bonds.hpp). D = 0 is no bond; a large D
+// approaches a perfect one while D h stays below the bodies' stiffness
+// (docs/theory/contact.md).
 #pragma once
 #include "core/parameter_table.hpp"
 #include "core/vec.hpp"

@@ -32,14 +32,14 @@ inline bool detects_contact(const ContactLaw& law) {
 }
 
 // Whether `law` is the interface, which acts by a force from the
-// displacement jump (tasks/contact.hpp) and changes no velocity itself.
+// displacement jump (tasks/contact_bonds.hpp) and changes no velocity itself.
 inline bool is_interface(const ContactLaw& law) { return std::holds_alternative<InterfaceLaw>(law); }
 
 // The first body's velocity change by `law` for its relative velocity r
 // and the unit normal n out of it (tasks/contact.hpp, tasks/wall.hpp): a
 // law that detects contact acts only on approach, r . n > 0 (separating
 // or sliding apart is free); stick acts everywhere; the interface gives
-// none (its force is applied on its own).
+// none (its force is applied by tasks/contact_bonds.hpp).
 template <int D>
 Vec<D> contact_velocity_change(const ContactLaw& law, const Vec<D>& r, const Vec<D>& n) {
   return std::visit(
