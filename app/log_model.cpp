@@ -68,6 +68,11 @@ void log_system(spdlog::logger& log, const Case& c, const Simulation<D, Shape>& 
     for (const ContactPair& p : contact.pairs) {
       std::string law = ContactLaws::name_of(p.law);
       if (const auto* coulomb = std::get_if<CoulombLaw>(&p.law)) law += ", mu " + readable_text(coulomb->friction);
+      if (const auto* bond = std::get_if<InterfaceLaw>(&p.law)) {
+        log.info("contact '{}': interface, D_n {} Pa/m, D_t {} Pa/m, bonded wherever both bodies carry mass", p.name,
+                 readable_text(bond->normal_stiffness), readable_text(bond->tangential_stiffness));
+        continue;
+      }
       log.info("contact '{}': {}, touching where the two volumes fill {} of a node's", p.name, law,
                readable_text(p.touch_fraction));
     }
@@ -125,6 +130,11 @@ void log_system(spdlog::logger& log, const Case& c, const Simulation<D, Shape>& 
              scheme.label, Shape::name, stable.particles_per_cell, time.fixed_steps(), time.end_time());
   }
   if (time.limits().diffusion) log.info("time-step limits: {}", time_step_limits(time.limits()));
+  if (const auto& bond = time.limits().interface) {
+    log.info("time-step limits: wave limit {:.4g} s, interface '{}' limit {:.4g} s (D {:.4g} Pa/m): together "
+             "1 / sqrt(1 / dt_w^2 + 1 / dt_i^2) = {:.4g} s",
+             stable.dt(), bond->contact, bond->dt, bond->stiffness, time.limits().mechanical_dt());
+  }
 }
 
 }  // namespace

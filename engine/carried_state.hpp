@@ -7,8 +7,8 @@
 // whether a re-sort is due, and the constraints' reactions over the last
 // step (which the diagnostics report), the kinetic energy after the last
 // step and the work done on the bodies since t = 0 (the energy balance's),
-// and in a contact scene the contact forces of the last step and the
-// contact's work.
+// and in a contact scene the contact forces of the last step, the
+// interfaces' stored energy and the contact's work.
 // The grid's nodal values do not carry. Each step clears the nodes of the
 // active box before mapping to them and computes there every value it
 // reads. A node leaves the active box at a re-sort only when no particle
@@ -69,6 +69,8 @@ void visit_carried_state(System& s, F&& f) {
     for (std::size_t k = 0; k < s.contact->pairs.size(); ++k) {
       f("contact." + std::to_string(k) + ".normal_force", s.contact->pairs[k].normal_force);
       f("contact." + std::to_string(k) + ".tangential_force", s.contact->pairs[k].tangential_force);
+      if (is_interface(s.contact->pairs[k].law))
+        f("contact." + std::to_string(k) + ".interface_energy", s.contact->pairs[k].interface_energy);
     }
     for (std::size_t r = 0; r < s.contact->rigid.size(); ++r) {
       f("rigid." + std::to_string(r) + ".force", s.contact->rigid[r].force);

@@ -37,7 +37,7 @@ struct Diagnostics {
   // Energy balance (engine/energy_balance.hpp), J (per unit thickness in 2D,
   // per unit cross-section in 1D).
   double kinetic_energy = 0.0;
-  double stored_energy = 0.0;      // the materials' recoverable energy
+  double stored_energy = 0.0;      // the materials' recoverable energy and the interfaces'
   double dissipated_energy = 0.0;  // plastic work, damage, damping
   WorkDone work;                   // done on the bodies since t = 0
   // kinetic + stored + dissipated - the work done: constant but for the
@@ -92,11 +92,17 @@ Diagnostics diagnostics(const DiscreteSystem<D, Shape>& system, std::size_t body
     for (int d = 0; d < D; ++d) row.reactions.push_back({w.name, d, w.force[d]});
   if (system.contact) {
     // Per pair the normal (pressing) and tangential forces on its first
-    // body, per rigid body the force on it per axis and its work, and the
-    // contact's work on the bodies (engine/energy_balance.hpp).
+    // body and an interface's stored energy, per rigid body the force on it
+    // per axis and its work, and the contact's work on the bodies
+    // (engine/energy_balance.hpp).
     for (const ContactPair& p : system.contact->pairs) {
       row.reactions.push_back({"contact." + p.name + ".normal", -1, p.normal_force});
       row.reactions.push_back({"contact." + p.name + ".tangential", -1, p.tangential_force});
+      // An interface's stored energy, part of the stored energy.
+      if (is_interface(p.law)) {
+        row.reactions.push_back({"contact." + p.name + ".interface_energy", -1, p.interface_energy});
+        row.stored_energy += p.interface_energy;
+      }
     }
     for (const RigidMotion<D>& r : system.contact->rigid) {
       for (int d = 0; d < D; ++d) row.reactions.push_back({r.name, d, r.force[d]});

@@ -74,17 +74,31 @@ int insert_after(Wiring& w, int after, Stage stage) {
   return node;
 }
 
+// Inserts a node running `stage` right before node `before`: it takes over
+// `before`'s incoming edges. Returns its index.
+int insert_before(Wiring& w, int before, Stage stage) {
+  const int node = static_cast<int>(w.nodes.size());
+  w.nodes.push_back({stage});
+  for (auto& [from, to] : w.edges)
+    if (to == before) to = node;
+  w.edges.emplace_back(node, before);
+  return node;
+}
+
 bool runs(const StageGroup& g, Stage s) { return std::ranges::find(g, s) != g.end(); }
 
 }  // namespace
 
-Wiring with_contact(const Wiring& wiring) {
+Wiring with_contact(const Wiring& wiring, bool bonded) {
   using enum Stage;
   Wiring w = wiring;
   std::vector<int> contact_nodes;
   const int count = static_cast<int>(wiring.nodes.size());
   for (int i = 0; i < count; ++i) {
-    if (runs(wiring.nodes[i], grid_integrate)) contact_nodes.push_back(insert_after(w, i, contact_updated));
+    if (runs(wiring.nodes[i], grid_integrate)) {
+      contact_nodes.push_back(insert_after(w, i, contact_updated));
+      if (bonded) contact_nodes.push_back(insert_before(w, i, contact_bonds));
+    }
     if (!runs(wiring.nodes[i], grid_velocity)) continue;
     const bool feeds_stress = std::ranges::any_of(wiring.edges, [&](const auto& e) {
       return e.first == i && runs(wiring.nodes[e.second], g2p_stress);

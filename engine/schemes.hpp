@@ -6,6 +6,7 @@
 //         -> grid_velocity -> g2p_stress
 // A scene with heat or solvent transport adds a branch (with_transport).
 #pragma once
+#include <algorithm>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -44,16 +45,19 @@ Wiring with_transport(const Wiring& mechanical, TransportBranch branch = Transpo
 
 // `wiring` with the contact stages (tasks/contact.hpp): contact_updated
 // after each grid_integrate, contact_projected after each grid_velocity
-// whose next node updates the stress (USF; MUSL's second projection), and
-// contact_volumes, with no predecessor, before every contact node.
-Wiring with_contact(const Wiring& wiring);
+// whose next node updates the stress (USF; MUSL's second projection), with
+// an interface (`bonded`) contact_bonds right before each grid_integrate
+// (tasks/contact_bonds.hpp), and contact_volumes, with no predecessor,
+// before every contact node.
+Wiring with_contact(const Wiring& wiring, bool bonded = false);
 
 // The wiring a system runs: the scheme's, with the contact stages only when
 // the scene has contacts, and the transport branch only when it conducts
 // heat or diffuses solvent.
 inline Wiring step_wiring(const Wiring& mechanical, const SystemSpec& spec,
                           TransportBranch branch = TransportBranch::beside) {
-  const Wiring w = spec.contacts.empty() ? mechanical : with_contact(mechanical);
+  const bool bonded = std::ranges::any_of(spec.contacts, [](const ContactSpec& c) { return is_interface(c.law); });
+  const Wiring w = spec.contacts.empty() ? mechanical : with_contact(mechanical, bonded);
   return spec.conducts_heat() || spec.diffuses_solvent() ? with_transport(w, branch) : w;
 }
 

@@ -5,13 +5,15 @@
 // Neumann analysis of the update, checked on the vibrating bar and the 2D
 // column), taken with a margin of 10 %. With dt = "auto" the particles'
 // speed is added to c_max at every step. When the scene conducts heat or
-// diffuses solvent, the explicit diffusion limit joins it (TimeStepLimit).
+// diffuses solvent, the explicit diffusion limit joins it, and an imperfect
+// interface's springs join the wave limit (TimeStepLimit).
 #pragma once
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
 #include <string>
+#include <variant>
 
 #include "discretisation/shapes/shape_functions.hpp"
 #include "discretisation/system_spec.hpp"
@@ -99,17 +101,73 @@ inline std::optional<DiffusionStep> diffusion_time_step(const SystemSpec& spec) 
   return result;
 }
 
-// Both limits of a scene: the accepted dt is the smaller.
+struct InterfaceStep {
+  double dt = 0.0;           // s, with the margin
+  std::string contact;       // the interface that sets it, "a~b"
+  double stiffness = 0.0;    // its larger D (Pa/m)
+  double density_a = 0.0, density_b = 0.0;  // the lightest material on each side (kg/m^3)
+};
+
+// An interface (discretisation/contact/contact_law_interface.hpp) ties the
+// masses m_a, m_b of its two bodies at a node by a spring k = D A_I, and
+// the central difference is stable for that pair alone while
+// dt <= 2 / sqrt(k (1 / m_a + 1 / m_b)) ([Belytschko 2000]). Estimated from
+// the initial state at a node of a face along the grid, where the interface
+// area is A_I = h^(D-1), with m = rho h^D / 4 on each side (h the smallest
+// cell; D the larger of D_n and D_t; rho the lightest material on each
+// side):
+//   dt_i = sqrt(h / (D (1 / rho_a + 1 / rho_b))),
+// taken with the wave limit's margin; the smallest over the interfaces.
+// The node holds rho h^D / 2 of each body, but the interface's displacement
+// fit reads the particle row next to the face with weights up to 1.5, and
+// two bonded blocks (linear shape functions, 2 particles per cell) blow up
+// from 0.85 of the limit with the whole nodal mass: a quarter keeps a
+// margin (docs/theory/contact.md). None without interfaces.
+inline std::optional<InterfaceStep> interface_time_step(const SystemSpec& spec) {
+  double h_min = std::numeric_limits<double>::infinity();
+  for (int d = 0; d < spec.dimension; ++d) h_min = std::min(h_min, spec.grid.cell_size[d]);
+  // The lightest material of a body or of the contact group it stands for.
+  const auto lightest = [&](int named) {
+    double rho = std::numeric_limits<double>::infinity();
+    const int group = spec.bodies[static_cast<std::size_t>(named)].contact_group;
+    for (std::size_t b = 0; b < spec.bodies.size(); ++b) {
+      if (static_cast<int>(b) != named && (group < 0 || spec.bodies[b].contact_group != group)) continue;
+      rho = std::min(rho, density(spec.materials[static_cast<std::size_t>(spec.bodies[b].material)].model));
+    }
+    return rho;
+  };
+  std::optional<InterfaceStep> result;
+  for (const ContactSpec& c : spec.contacts) {
+    const auto* law = std::get_if<InterfaceLaw>(&c.law);
+    if (!law) continue;
+    const double stiffness = std::max(law->normal_stiffness, law->tangential_stiffness);
+    if (!(stiffness > 0.0)) continue;
+    const double rho_a = lightest(c.first), rho_b = lightest(c.second);
+    const double dt = stability_margin * std::sqrt(h_min / (stiffness * (1.0 / rho_a + 1.0 / rho_b)));
+    if (!result || dt < result->dt) result = InterfaceStep{dt, c.names[0] + "~" + c.names[1], stiffness, rho_a, rho_b};
+  }
+  return result;
+}
+
+// The limits of a scene. The wave limit and the interfaces' act on the same
+// nodes: their stiffnesses add, and so do their squared frequencies (at
+// most), 1 / dt^2 = 1 / dt_wave^2 + 1 / dt_i^2 (mechanical_dt); the
+// accepted dt is the smaller of that and the diffusion limit.
 struct TimeStepLimit {
   StableStep wave;
   std::optional<DiffusionStep> diffusion;  // with transport only
+  std::optional<InterfaceStep> interface;  // with interfaces only
 
-  double dt() const { return diffusion ? std::min(wave.dt(), diffusion->dt) : wave.dt(); }
-  bool diffusion_governs() const { return diffusion && diffusion->dt < wave.dt(); }
+  double mechanical_dt() const {
+    return interface ? 1.0 / std::sqrt(1.0 / (wave.dt() * wave.dt()) + 1.0 / (interface->dt * interface->dt))
+                     : wave.dt();
+  }
+  double dt() const { return diffusion ? std::min(mechanical_dt(), diffusion->dt) : mechanical_dt(); }
+  bool diffusion_governs() const { return diffusion && diffusion->dt < mechanical_dt(); }
 };
 
 inline TimeStepLimit time_step_limit(const SystemSpec& spec, const Scheme& scheme) {
-  return {stable_time_step(spec, scheme), diffusion_time_step(spec)};
+  return {stable_time_step(spec, scheme), diffusion_time_step(spec), interface_time_step(spec)};
 }
 
 }  // namespace flowmpm

@@ -27,24 +27,40 @@ TimeStep::TimeStep(const SystemSpec& spec, const Scheme& scheme, const TimeContr
     cfl_ = control.cfl ? *control.cfl : std::min(0.5, 0.8 * stable.factor);
     if (cfl_ > stable.factor) fail("cfl", "a CFL number no larger than the stable limit " + wave_limit_text_);
     first_dt_ = cfl_ * stable.crossing;  // the particles at rest
-    // The same fraction of the diffusion limit as of the wave limit.
+    // The same fraction of the interface and diffusion limits as of the wave limit.
+    if (limits_.interface) {
+      interface_dt_ = cfl_ / stable.factor * limits_.interface->dt;
+      first_dt_ = with_interface(first_dt_);
+    }
     if (limits_.diffusion) {
       diffusion_dt_ = cfl_ / stable.factor * limits_.diffusion->dt;
       first_dt_ = std::min(first_dt_, diffusion_dt_);
     }
   }
-  if (!limits_.diffusion) {
+  if (!limits_.diffusion && !limits_.interface) {
     if (first_dt_ > stable.dt()) fail("dt", "a time step no larger than the stable limit " + wave_limit_text_);
   } else if (first_dt_ > limits_.dt()) {
-    const DiffusionStep& diffusion = *limits_.diffusion;
-    const std::string diffusion_limit = "the " + diffusion.field + " diffusion limit 1 / (2 kappa sum_d 1/h_d^2) = " +
-                                        readable_text(diffusion.dt) + " s (" + diffusion.field + " diffusivity " +
-                                        readable_text(diffusion.diffusivity) + " m^2/s of material \"" +
-                                        diffusion.material + "\")";
-    const std::string wave_limit = "the wave limit " + wave_limit_text_;
-    fail("dt", "a time step no larger than the stable limit " + readable_text(limits_.dt()) + " s: " +
-                   (limits_.diffusion_governs() ? diffusion_limit + " governs; " + wave_limit
-                                                : wave_limit + " governs; " + diffusion_limit));
+    std::string mechanical = "the wave limit " + wave_limit_text_;
+    if (limits_.interface) {
+      const InterfaceStep& i = *limits_.interface;
+      mechanical = "1 / sqrt(1 / dt_w^2 + 1 / dt_i^2) = " + readable_text(limits_.mechanical_dt()) + " s with " +
+                   mechanical + " and the interface limit of contact \"" + i.contact + "\" " +
+                   readable_text(stability_margin) + " sqrt(h / (D (1 / rho_a + 1 / rho_b))) = " +
+                   readable_text(i.dt) + " s (D " + readable_text(i.stiffness) + " Pa/m, rho " +
+                   readable_text(i.density_a) + " and " + readable_text(i.density_b) + " kg/m^3)";
+    }
+    if (!limits_.diffusion) {
+      fail("dt", "a time step no larger than the stable limit " + mechanical);
+    } else {
+      const DiffusionStep& diffusion = *limits_.diffusion;
+      const std::string diffusion_limit = "the " + diffusion.field + " diffusion limit 1 / (2 kappa sum_d 1/h_d^2) = " +
+                                          readable_text(diffusion.dt) + " s (" + diffusion.field + " diffusivity " +
+                                          readable_text(diffusion.diffusivity) + " m^2/s of material \"" +
+                                          diffusion.material + "\")";
+      fail("dt", "a time step no larger than the stable limit " + readable_text(limits_.dt()) + " s: " +
+                     (limits_.diffusion_governs() ? diffusion_limit + " governs; " + mechanical
+                                                  : mechanical + " governs; " + diffusion_limit));
+    }
   }
   if (control.automatic && control.end_time / first_dt_ > static_cast<double>(max_steps)) {
     fail("end_time", "at most " + std::string(max_steps_text) + " steps (end_time over the first dt, " + readable_text(first_dt_) + " s, is " +
@@ -59,8 +75,13 @@ std::int64_t TimeStep::planned_steps() const {
 double TimeStep::next_dt(double t, double max_speed_sq) const {
   if (!control_.automatic) return control_.dt;
   double dt = cfl_ * h_min_ / (c_max_ + std::sqrt(max_speed_sq));
+  if (limits_.interface) dt = with_interface(dt);
   if (limits_.diffusion) dt = std::min(dt, diffusion_dt_);
   return std::min(dt, control_.end_time - t);
+}
+
+double TimeStep::with_interface(double dt) const {
+  return 1.0 / std::sqrt(1.0 / (dt * dt) + 1.0 / (interface_dt_ * interface_dt_));
 }
 
 bool TimeStep::done(std::int64_t step, double t) const {

@@ -1,10 +1,11 @@
 // The one owner of the time step: the limits of every physics a scene has
 // (engine/stable_time_step.hpp: the wave limit of the scheme and shape
-// function, the explicit diffusion limit with transport), the check of a
+// function, the springs of imperfect interfaces, the explicit diffusion
+// limit with transport), the check of a
 // fixed dt or a CFL number against them, the first and every later
 // automatic dt, and the end of the run. The case reader, `flowmpm check`,
-// runs, sweeps and restarts all ask it. A new limit (a contact stiffness,
-// say) joins TimeStepLimit and is honoured here.
+// runs, sweeps and restarts all ask it. A new limit joins TimeStepLimit and
+// is honoured here (the interfaces' springs did).
 #pragma once
 #include <cstdint>
 #include <optional>
@@ -58,8 +59,9 @@ class TimeStep {
   // The steps the run is planned for (the automatic ones at the first dt).
   std::int64_t planned_steps() const;
   // The step from time t on, with the particles' largest speed so far: the
-  // fixed one, or the CFL step with that speed added to the wave speed and
-  // the same fraction of the diffusion limit, never past end_time.
+  // fixed one, or the CFL step with that speed added to the wave speed,
+  // joined by the same fraction of the interface and the diffusion limits,
+  // never past end_time.
   double next_dt(double t, double max_speed_sq) const;
   // Whether a run at this step and time has reached its end.
   bool done(std::int64_t step, double t) const;
@@ -74,9 +76,13 @@ class TimeStep {
  private:
   TimeControl control_;
   TimeStepLimit limits_;
-  double h_min_ = 0.0, c_max_ = 0.0, cfl_ = 0.0, first_dt_ = 0.0, diffusion_dt_ = 0.0;
+  double h_min_ = 0.0, c_max_ = 0.0, cfl_ = 0.0, first_dt_ = 0.0, diffusion_dt_ = 0.0, interface_dt_ = 0.0;
   std::string wave_limit_text_;
   std::optional<TimeStepProblem> problem_;
+
+  // A CFL step dt with the same fraction of the interface limit:
+  // 1 / sqrt(1 / dt^2 + 1 / dt_i^2) (TimeStepLimit).
+  double with_interface(double dt) const;
 };
 
 }  // namespace flowmpm

@@ -2,7 +2,9 @@
 // (discretisation/contact/contact_fields.hpp):
 //   contact_volumes:   per contact field k, V_kI = sum_p N_Ip V_p and its
 //                      gradient G_kI = sum_p V_p grad N_Ip, from the
-//                      particles at the start of the step;
+//                      particles at the start of the step, and for a field
+//                      an interface bonds the sums of its displacement fit
+//                      (interface_displacement.hpp);
 //   contact_projected: after a grid_velocity whose velocities the stress
 //                      update reads (USF, and MUSL's second projection): the
 //                      contact laws applied to those velocities;
@@ -22,6 +24,9 @@
 //   n = -G_b / |G_b|               against a rigid body (its surface is exact),
 // G = sum_p V_p grad N_Ip pointing out of a body at its surface nodes (N_Ip
 // grows as a particle moves towards node I).
+// An interface (contact_law_interface.hpp) changes no velocity here: it is
+// a force, added to the fields' nodal forces before grid_integrate
+// (tasks/contact_bonds.hpp); contact_volumes maps what it needs.
 // A node shared by more than two fields applies its pairs one after the
 // other, in field order. Each field keeps its own constraints and loads
 // (tasks/grid_update.hpp). Serial over a node's pairs, parallel over slabs
@@ -30,6 +35,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -48,21 +54,43 @@ void contact_volumes(DiscreteSystem<D, Shape>& system) {
       for (int d = 0; d < D; ++d) contact.volume_gradient[k][d][n] = 0.0;
     });
   }
+  for (auto& field : contact.displacement) {
+    if (field.empty()) continue;
+    for_each_active_node(grid, [&](std::size_t n, const Index<D>&) {
+      for (auto& s : field.sum) s[n] = 0.0;
+    });
+  }
   scatter_by_colour(system, [&](ParticleBatch<D>& b, std::uint32_t first, std::uint32_t last, std::uint32_t) {
     if (b.field == 0) return;
     double* const to_volume = contact.volume[b.field - 1].data();
     double* to_gradient[D];
     for (int d = 0; d < D; ++d) to_gradient[d] = contact.volume_gradient[b.field - 1][d].data();
-    for (std::uint32_t p = first; p < last; ++p) {
-      const Stencil<D, Shape, true> s(grid, b.x[p], b.half_width);
-      const double V = b.volume[p];
-      s.for_each_node_pair([&]<int Count>(int line, int k, std::size_t n) {
-        const auto w = s.template pair_weights<Count>(line, k);
-        store_nodes<Count>(to_volume + n, load_nodes<Count>(to_volume + n) + V * w.N);
-        for (int d = 0; d < D; ++d)
-          store_nodes<Count>(to_gradient[d] + n, load_nodes<Count>(to_gradient[d] + n) + V * w.dN[d]);
-      });
-    }
+    // With an interface: sum_p N_Ip V_p q_p too, q the terms of the displacement fit.
+    using Fit = InterfaceDisplacement<D>;
+    const bool bonded = b.field <= contact.deformable_count() && !contact.displacement[b.field - 1].empty();
+    double* to_fit[Fit::terms];
+    for (int t = 0; t < Fit::terms; ++t) to_fit[t] = bonded ? contact.displacement[b.field - 1].sum[t].data() : nullptr;
+    const auto scatter = [&]<bool Bonded>() {
+      for (std::uint32_t p = first; p < last; ++p) {
+        const Stencil<D, Shape, true> s(grid, b.x[p], b.half_width);
+        const double V = b.volume[p];
+        std::array<double, Fit::terms> Vq;
+        if constexpr (Bonded) {
+          Vq = Fit::particle_terms(Vec<D>(b.x[p] - grid.origin), Vec<D>(b.x[p] - b.x0[p]));
+          for (double& q : Vq) q *= V;
+        }
+        s.for_each_node_pair([&]<int Count>(int line, int k, std::size_t n) {
+          const auto w = s.template pair_weights<Count>(line, k);
+          store_nodes<Count>(to_volume + n, load_nodes<Count>(to_volume + n) + V * w.N);
+          for (int d = 0; d < D; ++d)
+            store_nodes<Count>(to_gradient[d] + n, load_nodes<Count>(to_gradient[d] + n) + V * w.dN[d]);
+          if constexpr (Bonded)
+            for (int t = 0; t < Fit::terms; ++t)
+              store_nodes<Count>(to_fit[t] + n, load_nodes<Count>(to_fit[t] + n) + Vq[t] * w.N);
+        });
+      }
+    };
+    bonded ? scatter.template operator()<true>() : scatter.template operator()<false>();
   });
 }
 
@@ -114,12 +142,6 @@ struct NodeContact {
            pair.touch_fraction * node_volume;
   }
 
-  Vec<D> gradient(int field, std::size_t n) const {
-    Vec<D> g;
-    for (int d = 0; d < D; ++d) g[d] = contact.volume_gradient[field - 1][d][n];
-    return g;
-  }
-
   // The law's velocity change of field a for relative velocity r: the
   // whole of -r for stick; else only where the pair touches and approaches.
   // Sets `normal` (zero for stick).
@@ -129,13 +151,7 @@ struct NodeContact {
     const ContactPair& pair = contact.pairs[static_cast<std::size_t>(pair_index)];
     if (detects_contact(pair.law)) {
       if (!touch(pair, n)) return Vec<D>::Zero();
-      // The normal of the body with more volume at the node: its surface
-      // there is the better resolved (a rigid body's is exact).
-      const bool from_b = contact.is_rigid(b) || contact.volume[b - 1][n] > contact.volume[a - 1][n];
-      const Vec<D> g = from_b ? Vec<D>(-gradient(b, n)) : gradient(a, n);
-      const double length = g.norm();
-      if (!(length > 0.0)) return Vec<D>::Zero();
-      normal = g / length;
+      if (!contact.outward_normal(a, b, n, normal)) return Vec<D>::Zero();
     }
     return contact_velocity_change(pair.law, r, normal);
   }
@@ -165,9 +181,10 @@ struct NodeContact {
       // Deformable pairs.
       for (int b = a + 1; b < fields; ++b) {
         if (!(m[b] > 0.0)) continue;
+        const int pair = contact.pair_index(a, b);
+        if (pair >= 0 && is_interface(contact.pairs[static_cast<std::size_t>(pair)].law)) continue;
         const Vec<D> va = v[a] + dv[a], vb = v[b] + dv[b];
         const Vec<D> r = (m[b] / (m[a] + m[b])) * (va - vb);  // v_a - v_cm
-        const int pair = contact.pair_index(a, b);
         const Vec<D> change_a = this->change(pair, a, b, n, r, normal);
         if (change_a.isZero(0.0)) continue;
         const Vec<D> impulse = m[a] * change_a;
@@ -263,6 +280,7 @@ void contact_updated(DiscreteSystem<D, Shape>& system) {
     total.work += s.work;
   }
   for (std::size_t i = 0; i < contact.pairs.size(); ++i) {
+    if (is_interface(contact.pairs[i].law)) continue;  // its forces are contact_bonds'
     contact.pairs[i].normal_force = total.normal[i] / dt;
     contact.pairs[i].tangential_force = total.tangential[i].norm() / dt;
   }

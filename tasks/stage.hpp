@@ -28,12 +28,16 @@ enum class Stage {
   contact_volumes,
   contact_projected,
   contact_updated,
+  // The forces of imperfect interfaces (tasks/contact_bonds.hpp), only in
+  // scenes with one.
+  contact_bonds,
 };
 
-inline constexpr std::array<const char*, 15> stage_names = {
-    "p2g_momentum",    "p2g_force",       "grid_velocity",     "grid_integrate", "g2p_motion",
-    "g2p_stress",      "remap",           "transport_p2g",     "transport_flux", "transport_update",
-    "transport_g2p",   "nonlocal_settle", "contact_volumes",   "contact_projected", "contact_updated"};
+inline constexpr std::array<const char*, 16> stage_names = {
+    "p2g_momentum",    "p2g_force",       "grid_velocity",   "grid_integrate",    "g2p_motion",
+    "g2p_stress",      "remap",           "transport_p2g",   "transport_flux",    "transport_update",
+    "transport_g2p",   "nonlocal_settle", "contact_volumes", "contact_projected", "contact_updated",
+    "contact_bonds"};
 
 inline const char* stage_name(Stage s) { return stage_names[static_cast<std::size_t>(s)]; }
 
@@ -52,7 +56,7 @@ inline constexpr unsigned grid_transport = 1u << 7;      // nodal heat and solve
 inline constexpr unsigned reaction_sums = 1u << 8;       // the constraints' reactions and work, load work, damping power
 inline constexpr unsigned step_sums = 1u << 9;           // block energies, the largest particle speed
 inline constexpr unsigned nonlocal_tables = 1u << 10;    // the nonlocal neighbours and their weights
-inline constexpr unsigned contact_volumes = 1u << 11;    // the contact fields' nodal volumes and their gradients
+inline constexpr unsigned contact_volumes = 1u << 11;    // the contact fields' nodal volumes, their gradients, the interfaces' displacement fits
 }  // namespace stage_data
 inline constexpr std::array<const char*, 12> stage_data_names = {
     "particle_motion", "particle_volume", "particle_stress", "particle_transport", "grid_momentum", "grid_force",
@@ -63,7 +67,7 @@ struct StageAccess {
 };
 
 // Each stage's access, from its kernel (tasks/p2g.hpp, grid_update.hpp,
-// g2p.hpp, transport.hpp, nonlocal_settle.hpp, contact.hpp). A new stage
+// g2p.hpp, transport.hpp, nonlocal_settle.hpp, contact.hpp, contact_bonds.hpp). A new stage
 // states its own.
 inline StageAccess stage_access(Stage s) {
   using namespace stage_data;
@@ -87,6 +91,7 @@ inline StageAccess stage_access(Stage s) {
     case Stage::contact_projected: return {grid_momentum | grid_velocity | contact_volumes, grid_velocity};
     case Stage::contact_updated:
       return {grid_momentum | grid_force | grid_velocity | contact_volumes, grid_momentum | grid_velocity | reaction_sums};
+    case Stage::contact_bonds: return {grid_momentum | grid_force | contact_volumes, grid_force | reaction_sums};
   }
   return {};
 }

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "tasks/contact.hpp"
+#include "tasks/contact_bonds.hpp"
 #include "tasks/g2p.hpp"
 #include "tasks/grid_update.hpp"
 #include "tasks/nonlocal_settle.hpp"
@@ -47,6 +48,7 @@ StagePass<D, Shape> stage_pass(const StageGroup& group) {
       {{Stage::contact_volumes}, &contact_volumes<D, Shape>},
       {{Stage::contact_projected}, &contact_projected<D, Shape>},
       {{Stage::contact_updated}, &contact_updated<D, Shape>},
+      {{Stage::contact_bonds}, &contact_bonds<D, Shape>},
   };
   for (const Entry& e : table)
     if (e.stages == group) return e.pass;

@@ -3,7 +3,9 @@
 // (a block sliding or sticking on a 30 degree incline, on a rigid plane and
 // on a deformable slab), Sulsky's disks with frictionless contact against
 // the same disks in one velocity field, a 3D block bouncing on a rigid
-// floor, and bad contact input rejected with the
+// floor, two bonded blocks whose interface carries D [u] per unit area,
+// two poplar strands bonded by an imperfect interface in lap shear against
+// the shear-lag closed form, and bad contact input rejected with the
 // file, line and key. Each tolerance says why it is what it is; the
 // measured values are printed (MESSAGE) and quoted in the validation page.
 #include <doctest/doctest.h>
@@ -68,6 +70,39 @@ rigid = { velocity = { x = -0.1 } }
 particles_per_cell = 2
 min = [0.5, 0.2]
 max = [0.7, 0.4]
+)";
+
+// Block b on block a's top face (narrower, so that its corners stand on
+// a's face), bonded by an interface.
+const std::string bonded_blocks = R"(
+[analysis]
+dimension = 2
+dt = 1e-4
+steps = 1
+[grid]
+origin = [0.0, 0.0]
+cell_size = 0.1
+cells = [10, 10]
+[materials.soft]
+type = "linear_elastic"
+density = 1000.0
+youngs_modulus = 1e6
+poisson_ratio = 0.3
+[[bodies]]
+name = "a"
+material = "soft"
+particles_per_cell = 2
+min = [0.2, 0.2]
+max = [0.8, 0.4]
+[[bodies]]
+name = "b"
+material = "soft"
+particles_per_cell = 2
+min = [0.3, 0.4]
+max = [0.6, 0.6]
+[[contacts]]
+bodies = ["a", "b"]
+law = "interface"
 )";
 
 }  // namespace
@@ -247,6 +282,90 @@ TEST_CASE("a 3D block dropped on a rigid floor bounces off it, and the energy ba
   }
 }
 
+TEST_CASE("an interface: two bonded blocks with a uniform displacement jump carry D [u] over the shared face") {
+  // Block b (0.3 m wide) displaced by [u] = (s, n) against block a, at
+  // rest and unstressed: in one step the interface's force on a is
+  // (D_t s, D_n n) per unit area over the 0.3 m the blocks share (the end
+  // nodes of b's face count half a cell, A_I = min |G . n|), and it stores
+  // W (D_n n^2 + D_t s^2) / 2. The areas move by n / h = 2e-5 with b.
+  const double Dt = 1e6, Dn = 4e6, s = 1e-6, n = 2e-6, W = 0.3;
+  const Case c = testing::case_from_text(
+      "bonded", bonded_blocks + "tangential_stiffness = " + std::to_string(Dt) + "\nnormal_stiffness = " + std::to_string(Dn) + "\n");
+  auto sim = testing::simulation<2, LinearShape>(c);
+  for (auto& b : sim.system().batches) {
+    if (b.body != 1) continue;
+    for (auto& x : b.x) x += Vec<2>(s, n);
+  }
+  sim.advance();
+  const ContactPair& pair = sim.system().contact->pairs.at(0);
+  MESSAGE("bonded blocks: tangential force " << pair.tangential_force << " N/m against " << Dt * s * W
+                                             << ", normal force " << pair.normal_force << " N/m against " << -Dn * n * W
+                                             << ", stored " << pair.interface_energy << " J/m");
+  CHECK(pair.tangential_force == doctest::Approx(Dt * s * W).epsilon(1e-4));
+  CHECK(pair.normal_force == doctest::Approx(-Dn * n * W).epsilon(1e-4));  // in tension it pulls
+  CHECK(pair.interface_energy == doctest::Approx(0.5 * W * (Dn * n * n + Dt * s * s)).epsilon(1e-4));
+  CHECK(sim.system().work.contact == 0.0);  // an interface's work is its stored energy, not contact work
+}
+
+TEST_CASE("two poplar strands bonded by an interface in lap shear: the joint's stiffness against shear-lag theory") {
+  // configs/contact/lap_shear_interface.toml (D_t = 1e11 Pa/m) at 0.5 and
+  // 0.25 mm cells (2 and 4 through each strand): P / delta against
+  // Volkersen's shear-lag joint with the strands' shear compliance, within
+  // 5 % (the issue's tolerance); measured 0.22 % and 0.12 %, falling with
+  // the cell towards the closed form's own 0.08 % (it takes the shear stress
+  // linear across each strand: docs/validation/contact.md). Quasi-static:
+  // the kinetic energy at the end is below 1e-3 of the stored energy.
+  const std::string file = "contact/lap_shear_interface.toml";
+  const char* sizes[2][2] = {{"grid.cell_size=0.0005", "grid.cells=[62, 6]"},
+                             {"grid.cell_size=0.00025", "grid.cells=[124, 12]"}};
+  double error[2];
+  for (int i = 0; i < 2; ++i) {
+    const RunSummary s = testing::run(read_case(testing::config(file), {sizes[i][0], sizes[i][1]}));
+    error[i] = s.errors.at("slope");
+    MESSAGE("lap shear, " << std::string(sizes[i][0]) << ": P / delta = " << s.measures.at("slope") << " N/m^2 against "
+                          << s.measures.at("expected") << ", error " << error[i] << ", energy balance error "
+                          << s.energy_error << ", kinetic / stored " << s.kinetic_energy / s.stored_energy);
+    CHECK(error[i] < 0.05);
+    CHECK(s.kinetic_energy < 1e-3 * s.stored_energy);
+    // The interface's stored energy against the work done on it: measured
+    // 0.11 % and 0.05 %.
+    CHECK(s.energy_error < 0.005);
+  }
+  CHECK(error[1] < error[0]);
+}
+
+TEST_CASE("an interface's time-step limit: accepted below it, refused above it with the key") {
+  // D = 1e12 Pa/m between blocks of 1000 kg/m^3 on 0.1 m cells:
+  // dt_i = 0.9 sqrt(h / (D (1 / rho_a + 1 / rho_b))) = 6.36e-6 s, well
+  // below the wave limit (1.35e-3 s): together 6.36e-6 s.
+  const std::string stiff = bonded_blocks + "tangential_stiffness = 1e12\nnormal_stiffness = 1e12\n";
+  std::string fixed = stiff;
+  fixed.replace(fixed.find("dt = 1e-4"), 9, "dt = 6e-6");
+  CHECK(rejection("stiff_ok", fixed).empty());
+  const std::string m = rejection("stiff", stiff);
+  CHECK(m.find("stiff.toml:4: analysis.dt: expected a time step no larger than the stable limit 1 / sqrt(1 / dt_w^2 + "
+               "1 / dt_i^2)") != std::string::npos);
+  CHECK(m.find("the interface limit of contact \"a~b\"") != std::string::npos);
+  // The estimate against the run: b sliding and lifting off a at 0.1 and
+  // 0.05 m/s (kinetic energy 0.375 J/m) keeps its energy at the limit,
+  // 6.36e-6 s (it does up to 8e-6 s), and blows up at 1e-5 s.
+  std::string moving = fixed;
+  moving.replace(moving.find("min = [0.3, 0.4]"), 16, "velocity = [0.1, 0.05]\nmin = [0.3, 0.4]");
+  const Case c = testing::case_from_text("stiff_moving", moving);
+  for (const double dt : {6.36e-6, 1e-5}) {
+    Simulation<2, LinearShape> sim(c.system, c.scheme->wiring, dt);
+    double largest = 0.0;
+    for (int step = 0; step < 1000 && largest < 1e3; ++step) {
+      sim.system().dt = dt;
+      sim.advance();
+      largest = std::max(largest, sim.system().kinetic_energy);
+    }
+    MESSAGE("stiff interface at dt = " << dt << " s: largest kinetic energy " << largest << " J/m");
+    if (dt < 1e-5) CHECK(largest < 0.38);
+    else CHECK(largest > 1e3);
+  }
+}
+
 TEST_CASE("bad contact input is rejected with the file, line and key") {
   const std::string contact = "[[contacts]]\nbodies = [\"a\", \"wall\"]\nlaw = \"coulomb\"\nfriction = 0.3\n";
   SUBCASE("a valid pair builds") { CHECK(rejection("valid", two_blocks + contact).empty()); }
@@ -324,6 +443,33 @@ TEST_CASE("bad contact input is rejected with the file, line and key") {
         "wall_inside", two_blocks + contact +
                            "[[node_sets]]\nname = \"w\"\nplane = \"x\"\nat = 0.3\nwall = { law = \"frictionless\" }\n");
     CHECK(m.find("node_sets \"w\": a wall needs the material on one side of its plane") != std::string::npos);
+  }
+  SUBCASE("a negative interface stiffness") {
+    const std::string m = rejection("negative_dt", bonded_blocks + "tangential_stiffness = -1e9\nnormal_stiffness = 1e9\n");
+    CHECK(m.find("negative_dt.toml:30: contacts[0].tangential_stiffness: expected an interface stiffness D_t >= 0 in "
+                 "Pa/m") != std::string::npos);
+    const std::string n = rejection("negative_dn", bonded_blocks + "tangential_stiffness = 1e9\nnormal_stiffness = -1\n");
+    CHECK(n.find("negative_dn.toml:31: contacts[0].normal_stiffness: expected an interface stiffness D_n >= 0 in Pa/m") !=
+          std::string::npos);
+  }
+  SUBCASE("an interface without its stiffness") {
+    const std::string m = rejection("no_dn", bonded_blocks + "tangential_stiffness = 1e9\n");
+    CHECK(m.find("contacts[0].normal_stiffness") != std::string::npos);
+  }
+  SUBCASE("an interface with a rigid body") {
+    const std::string m = rejection(
+        "rigid_bond", two_blocks + "[[contacts]]\nbodies = [\"a\", \"wall\"]\nlaw = \"interface\"\n"
+                                   "tangential_stiffness = 1e9\nnormal_stiffness = 1e9\n");
+    CHECK(m.find("rigid_bond.toml:29: contacts[0].law: expected \"stick\", \"frictionless\" or \"coulomb\" against a "
+                 "rigid body (\"wall\"): an interface bonds two deformable bodies") != std::string::npos);
+  }
+  SUBCASE("a wall with an interface") {
+    const std::string m = rejection(
+        "wall_bond", two_blocks + contact +
+                         "[[node_sets]]\nname = \"w\"\nplane = \"y\"\nat = 0.1\nwall = { law = \"interface\", "
+                         "normal_stiffness = 1.0, tangential_stiffness = 1.0 }\n");
+    CHECK(m.find("node_sets[0].wall.law: expected \"stick\", \"frictionless\" or \"coulomb\" (a wall bonds to nothing)") !=
+          std::string::npos);
   }
   SUBCASE("a negative touch fraction") {
     const std::string m = rejection("touch", two_blocks + contact + "touch_fraction = -1.0\n");

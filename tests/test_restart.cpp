@@ -385,6 +385,16 @@ TEST_CASE("contact: the contact forces, the rigid body's force and work, and the
                         {"output.every=1000", "analysis.end_time=0.5"});
 }
 
+TEST_CASE("an imperfect interface: its stored energy and the initial positions it measures from carry") {
+  // The lap shear of configs/contact at 0.5 mm cells, checkpointed during
+  // the pull: timeseries.csv has the interface's energy (part of the
+  // stored energy) and the lap_shear reference's error.
+  TempDir dir("flowmpm_restart");
+  check_restart_matches(dir, config_file("contact/lap_shear_interface.toml"), 1000,
+                        {"grid.cell_size=0.0005", "grid.cells=[62, 6]"});
+  CHECK(contains(read_text(dir.path / "restarted" / "timeseries.csv"), "contact.lower~upper.interface_energy"));
+}
+
 TEST_CASE("nonlocal strain softening: the averages and the damage carry") {
   // The symmetric bar of configs/materials: a band opens through the
   // nonlocal averages (weights rebuilt after the restart from x0, carried).

@@ -20,6 +20,7 @@
 #include "verification/elastic_impact.hpp"
 #include "verification/elastic_wave.hpp"
 #include "verification/incline.hpp"
+#include "verification/lap_shear.hpp"
 #include "verification/plate_with_hole.hpp"
 #include "verification/prandtl_punch.hpp"
 #include "verification/slab_transport.hpp"
@@ -36,7 +37,7 @@ namespace flowmpm {
 using ReferenceSolution =
     std::variant<AxialVibration, ElasticWave, UniaxialStress, ColumnSelfWeight, SlabTransport, ThermalStress,
                  SwellingSlab, SwellingBending, UniformStressReference, PlateWithHole, ThickCylinder, Cantilever,
-                 ElasticImpact, TaylorImpact, Incline, PrandtlPunch>;
+                 ElasticImpact, TaylorImpact, Incline, PrandtlPunch, LapShear>;
 using ReferenceSolutions = Registry<ReferenceSolution>;
 
 class Reference {

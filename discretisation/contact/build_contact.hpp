@@ -63,6 +63,12 @@ void build_contact(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
     contact.pair_of[static_cast<std::size_t>(pair.first * next + pair.second)] = static_cast<int>(contact.pairs.size());
     contact.pairs.push_back(std::move(pair));
   }
+  // The nodal displacements of the fields an interface bonds (both deformable).
+  contact.displacement.resize(contact.deformable.size());
+  for (const ContactPair& pair : contact.pairs) {
+    if (!is_interface(pair.law)) continue;
+    for (const int field : {pair.first, pair.second}) contact.displacement[static_cast<std::size_t>(field - 1)].allocate(nodes);
+  }
   for (auto& batch : system.batches) batch.field = field_of[static_cast<std::size_t>(batch.body)];
 }
 

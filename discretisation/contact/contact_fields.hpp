@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "discretisation/contact/contact_laws.hpp"
+#include "discretisation/contact/interface_displacement.hpp"
 #include "discretisation/grid/grid.hpp"
 #include "discretisation/loads/external_loads.hpp"
 
@@ -27,8 +28,11 @@ struct ContactPair {
   // of each, fill at least this fraction of the node's volume (prod h).
   double touch_fraction = 0.6;
   // Over the last step, on the first body (N; N/m in 2D): the normal force
-  // (>= 0 pressing) and the tangential force's magnitude.
+  // (>= 0 pressing; an interface in tension pulls, < 0) and the tangential
+  // force's magnitude.
   double normal_force = 0.0, tangential_force = 0.0;
+  // An interface's stored energy at the start of the last step (J; J/m in 2D).
+  double interface_energy = 0.0;
 };
 
 // A rigid body: its velocity (per axis, absent = 0), the force the bodies
@@ -59,6 +63,9 @@ struct ContactFields {
   // at its surface nodes (the normals).
   std::vector<std::vector<double>> volume;
   std::vector<VectorField> volume_gradient;
+  // Per deformable field k at [k - 1], the sums of its nodal displacement
+  // (interface_displacement.hpp); empty for a field no interface bonds.
+  std::vector<InterfaceDisplacement<D>> displacement;
   std::vector<ContactPair> pairs;
   // contact_law[a * fields + b]: the index into pairs of fields a < b, -1
   // for stick (fields = 1 + K + R).
@@ -68,6 +75,23 @@ struct ContactFields {
   int deformable_count() const { return static_cast<int>(deformable.size()); }
   bool is_rigid(int field) const { return field > deformable_count(); }
   int pair_index(int a, int b) const { return pair_of[static_cast<std::size_t>(a * fields + b)]; }
+
+  Vec<D> gradient(int field, std::size_t n) const {
+    Vec<D> g;
+    for (int d = 0; d < D; ++d) g[d] = volume_gradient[field - 1][d][n];
+    return g;
+  }
+  // The unit normal out of field a towards b at node n: that of the body
+  // with more volume there, whose surface is the better resolved (a rigid
+  // body's is exact). False where its gradient vanishes.
+  bool outward_normal(int a, int b, std::size_t n, Vec<D>& normal) const {
+    const bool from_b = is_rigid(b) || volume[b - 1][n] > volume[a - 1][n];
+    const Vec<D> g = from_b ? Vec<D>(-gradient(b, n)) : gradient(a, n);
+    const double length = g.norm();
+    if (!(length > 0.0)) return false;
+    normal = g / length;
+    return true;
+  }
 };
 
 }  // namespace flowmpm

@@ -77,6 +77,16 @@ void read_contact(TableReader t, SystemSpec& c) {
   contact.second = index[1];
   contact.names = {names[0], names[1]};
   contact.law = ContactLaws::read(t, "law");
+  if (is_interface(contact.law)) {
+    for (int i = 0; i < 2; ++i) {
+      if (c.bodies[static_cast<std::size_t>(index[i])].rigid()) {
+        t.fail("law", "\"stick\", \"frictionless\" or \"coulomb\" against a rigid body (\"" + names[static_cast<std::size_t>(i)] +
+                          "\"): an interface bonds two deformable bodies");
+      }
+    }
+    // Its displacement jump is measured from the particles' initial positions.
+    c.keep_initial_positions = true;
+  }
   contact.touch_fraction = t.number_or("touch_fraction", contact.touch_fraction);
   t.require(contact.touch_fraction > 0.0 && contact.touch_fraction <= 1.0, "touch_fraction",
             "a fraction of a node's volume in (0, 1]");

@@ -60,7 +60,10 @@ void read_node_set(TableReader t, SystemSpec& c, std::size_t index) {
   }
   if (t.has("wall")) {
     t.require(s.is_plane, "wall", "a wall on a plane of nodes (plane = \"x\"|\"y\"|\"z\", at)");
-    t.read_table("wall", [&](ParameterTable& w) { s.wall = ContactLaws::read(w, "law"); });
+    t.read_table("wall", [&](ParameterTable& w) {
+      s.wall = ContactLaws::read(w, "law");
+      w.require(!is_interface(*s.wall), "law", "\"stick\", \"frictionless\" or \"coulomb\" (a wall bonds to nothing)");
+    });
   }
   s.temperature = transport_condition(t, "temperature", c.conducts_heat());
   s.concentration = transport_condition(t, "concentration", c.diffuses_solvent());

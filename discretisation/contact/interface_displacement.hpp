@@ -1,0 +1,84 @@
+// A body's displacement at a grid node, for an imperfect interface
+// (contact_law_interface.hpp, tasks/contact.hpp): the linear fit
+//   u(x) ~ c + B (x - x_I)
+// to the displacements u_p = x_p - X_p of the body's particles near node I,
+// weighted by w_p = N_Ip V_p (least squares), evaluated at the node: c.
+// With the weighted means x_bar, u_bar, the position covariance C and the
+// position-displacement covariance K = cov(x, u),
+//   c = u_bar - K^T C^-1 (x_bar - x_I),
+// the mean displacement carried from the particles' centroid to the node
+// by the fitted gradient B = (C^-1 K)^T. The particles behind a surface
+// node lie inside the body (3h/8 deep on average at 2 per cell with linear
+// shape functions): their mean alone would read the body's own shear and
+// rotation over that depth as a jump across the interface (a rigid
+// rotation theta of two bonded bodies as theta 3h/4), where the fit is
+// exact for any linear displacement field. Directions in which the
+// particles do not spread (a single row, slivers of weight: variance
+// below `floor`) take the mean, unextrapolated.
+// The sums are sum_p w_p q_p of the particle terms q = (x, x x^T (upper
+// triangle), u, x u^T), x relative to the grid's origin; sum_p w_p is the
+// field's nodal volume (ContactFields::volume).
+#pragma once
+#include <array>
+#include <vector>
+
+#include <Eigen/Eigenvalues>
+
+#include "core/vec.hpp"
+
+namespace flowmpm {
+
+template <int D>
+struct InterfaceDisplacement {
+  static constexpr int pairs = D * (D + 1) / 2;
+  static constexpr int terms = D + pairs + D + D * D;
+  // sum_p w_p q_p per term and node; empty for a field no interface bonds.
+  std::array<std::vector<double>, terms> sum;
+
+  bool empty() const { return sum[0].empty(); }
+  void allocate(std::size_t nodes) {
+    for (auto& s : sum) s.assign(nodes, 0.0);
+  }
+
+  // q_p for position x (from the grid's origin) and displacement u.
+  static std::array<double, terms> particle_terms(const Vec<D>& x, const Vec<D>& u) {
+    std::array<double, terms> q;
+    int t = 0;
+    for (int i = 0; i < D; ++i) q[t++] = x[i];
+    for (int i = 0; i < D; ++i)
+      for (int j = i; j < D; ++j) q[t++] = x[i] * x[j];
+    for (int i = 0; i < D; ++i) q[t++] = u[i];
+    for (int i = 0; i < D; ++i)
+      for (int j = 0; j < D; ++j) q[t++] = x[i] * u[j];
+    return q;
+  }
+
+  // c at node n (position `node` from the grid's origin), the field's
+  // nodal volume there `volume` > 0.
+  Vec<D> at_node(std::size_t n, double volume, const Vec<D>& node, double floor) const {
+    using Matrix = Eigen::Matrix<double, D, D>;
+    Vec<D> x_bar, u_bar;
+    Matrix C, K;
+    int t = 0;
+    for (int i = 0; i < D; ++i) x_bar[i] = sum[t++][n] / volume;
+    for (int i = 0; i < D; ++i)
+      for (int j = i; j < D; ++j) C(i, j) = C(j, i) = sum[t++][n] / volume - x_bar[i] * x_bar[j];
+    for (int i = 0; i < D; ++i) u_bar[i] = sum[t++][n] / volume;
+    for (int i = 0; i < D; ++i)
+      for (int j = 0; j < D; ++j) K(i, j) = sum[t++][n] / volume - x_bar[i] * u_bar[j];
+    // C^-1 (x_bar - x_I) over the directions the particles spread in.
+    const Eigen::SelfAdjointEigenSolver<Matrix> eigen(C);
+    const Vec<D> offset = x_bar - node;
+    Vec<D> scaled = Vec<D>::Zero();
+    for (int k = 0; k < D; ++k) {
+      const double variance = eigen.eigenvalues()[k];
+      if (variance > floor) {
+        const Vec<D> axis = eigen.eigenvectors().col(k);
+        scaled += (axis.dot(offset) / variance) * axis;
+      }
+    }
+    return u_bar - K.transpose() * scaled;
+  }
+};
+
+}  // namespace flowmpm
