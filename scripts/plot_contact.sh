@@ -25,6 +25,8 @@
 #                           normal force (with the 2D Hertz estimate) and the
 #                           kinetic energy beside the one-field run
 #                           (configs/benchmarks/sulsky_disks.toml)
+#   contact_lap_shear.png   two strands bonded by an interface: load against
+#                           the pulled end's displacement, against Volkersen's
 #   contact_drop_3d.png     3D block on a rigid floor: centre height (and on a
 #                           wall) and the energy balance's terms
 # It also prints the Sulsky contact's measured duration and the Hertz
@@ -78,6 +80,9 @@ run sulsky_contact "$configs/contact/sulsky_disks_frictionless.toml" --set outpu
 run sulsky_one_field "$configs/benchmarks/sulsky_disks.toml" --set output.every=10 --set "$fields"
 run drop_3d "$configs/contact/drop_3d_rigid_floor.toml" --set output.every=10 --set "$fields"
 run drop_3d_wall "$configs/contact/drop_3d_wall.toml" --set output.every=10 --set "$fields"
+run lap_shear_0.5mm "$configs/contact/lap_shear_interface.toml" --set grid.cell_size=0.0005 --set "grid.cells=[62, 6]" \
+  --set output.every=10 --set "$fields"
+run lap_shear_0.25mm "$configs/contact/lap_shear_interface.toml" --set output.every=20 --set "$fields"
 
 /usr/bin/python3 - "$runs" "$data" <<'PY'
 import csv
@@ -199,6 +204,21 @@ np.savetxt(f"{out}/drop_3d.dat", np.column_stack([t, c[:, 1], ts["kinetic_energy
                                                    ts["gravity_work"], ts["contact_work"], ts["energy_balance_error"]]))
 t, c = centres("drop_3d_wall", deformable)
 np.savetxt(f"{out}/drop_3d_wall.dat", np.column_stack([t, c[:, 1]]))
+
+
+def ramp_displacement(t):
+    """the pulled end's displacement (m): its velocity rises linearly to 0.4 m/s at 25 us and falls to 0 at 50 us"""
+    t = np.minimum(t, 5e-5)
+    rise = 0.4 / 2.5e-5
+    up = 0.5 * rise * np.minimum(t, 2.5e-5) ** 2
+    late = np.maximum(t - 2.5e-5, 0.0)
+    return up + 0.4 * late - 0.5 * rise * late**2
+
+
+for cell in ["0.5mm", "0.25mm"]:
+    ts = series(f"lap_shear_{cell}")
+    np.savetxt(f"{out}/lap_shear_{cell}.dat",
+               np.column_stack([ramp_displacement(ts["time"]) * 1e6, ts["reaction.pulled.x"], ts["time"] * 1e6]))
 PY
 cat "$data/report.txt"
 read -r hertz touch <"$data/hertz.txt"
@@ -289,5 +309,17 @@ plot "$data/drop_3d.dat" using 1:3 with lines lw 2 lc 1 title "kinetic", \
      "" using 1:6 with lines lw 2 lc 4 title "contact work", \
      "" using 1:7 with lines lw 2 lc rgb "black" dt 2 title "balance error"
 unset multiplot
+
+set terminal pngcairo size 900,500 font ",11" noenhanced
+set output "$png/contact_lap_shear.png"
+set title "Two poplar strands bonded by an interface (D_t = 1e11 Pa/m), lap shear (lap_shear_interface.toml)\\nclosed form: Volkersen's shear-lag joint, P = K δ, K = 3.5239e8 N/m²"
+set xlabel "pulled end's displacement δ (μm)"
+set ylabel "load P on the pulled end (N per m of width)"
+set key bottom right
+set autoscale
+set xrange [0:10.5]
+plot 3.5239e8 * x * 1e-6 with lines lw 2 lc rgb "black" title "closed form", \
+     "$data/lap_shear_0.5mm.dat" using 1:2 with lines lw 3 lc 1 dt 2 title "cells of 0.5 mm", \
+     "$data/lap_shear_0.25mm.dat" using 1:2 with lines lw 1.5 lc 2 title "cells of 0.25 mm"
 GP
 ls "$png"/contact_*.png
