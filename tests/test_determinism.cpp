@@ -98,15 +98,16 @@ TEST_CASE("contact: 1 thread, 2 threads and the serial step agree bit for bit") 
 }
 TEST_CASE("an imperfect interface: 1 thread, 2 threads and the serial step agree bit for bit") {
   // The lap shear of configs/contact (two strands bonded by an interface,
-  // its forces summed per slab of nodes) at 0.5 mm cells, 1000 steps into
-  // the pull.
+  // its forces summed per slab of nodes) at 0.5 mm cells, 200 steps into
+  // the pull (short: the sanitizer build runs this program at -O0).
   const Case c = read_case(testing::config("contact/lap_shear_interface.toml"),
-                           {"grid.cell_size=0.0005", "grid.cells=[62, 6]", "analysis.dt=2e-8", "analysis.end_time=2e-5"});
+                           {"grid.cell_size=0.0005", "grid.cells=[62, 6]", "analysis.dt=3e-8", "analysis.end_time=6e-6"});
   const ParticleSnapshot one = run<2, LinearShape>(c, 1, false);
   check_identical(one, run<2, LinearShape>(c, 2, false));
   check_identical(one, run<2, LinearShape>(c, 2, true));
   double max_stress = 0.0;
   for (double s : one.find("stress")->real) max_stress = std::max(max_stress, std::abs(s));
+  MESSAGE("largest stress component " << max_stress << " Pa");
   CHECK(max_stress > 1e5);
 }
 TEST_CASE("uGIMP and B-splines (wider blocks): bit for bit too") {
