@@ -149,19 +149,20 @@ inline std::optional<InterfaceStep> interface_time_step(const SystemSpec& spec) 
   return result;
 }
 
-// The limits of a scene. The wave limit and the interfaces' act on the same
-// nodes: their stiffnesses add, and so do their squared frequencies (at
-// most), 1 / dt^2 = 1 / dt_wave^2 + 1 / dt_i^2 (mechanical_dt); the
-// accepted dt is the smaller of that and the diffusion limit.
+// Two limits that act on the same nodes (the wave limit and an
+// interface's): their stiffnesses add, and so do their squared frequencies
+// (at most), 1 / dt^2 = 1 / dt_a^2 + 1 / dt_b^2.
+inline double joined_dt(double dt_a, double dt_b) { return 1.0 / std::sqrt(1.0 / (dt_a * dt_a) + 1.0 / (dt_b * dt_b)); }
+
+// The limits of a scene: the wave limit joined by the interfaces'
+// (mechanical_dt); the accepted dt is the smaller of that and the
+// diffusion limit.
 struct TimeStepLimit {
   StableStep wave;
   std::optional<DiffusionStep> diffusion;  // with transport only
   std::optional<InterfaceStep> interface;  // with interfaces only
 
-  double mechanical_dt() const {
-    return interface ? 1.0 / std::sqrt(1.0 / (wave.dt() * wave.dt()) + 1.0 / (interface->dt * interface->dt))
-                     : wave.dt();
-  }
+  double mechanical_dt() const { return interface ? joined_dt(wave.dt(), interface->dt) : wave.dt(); }
   double dt() const { return diffusion ? std::min(mechanical_dt(), diffusion->dt) : mechanical_dt(); }
   bool diffusion_governs() const { return diffusion && diffusion->dt < mechanical_dt(); }
 };

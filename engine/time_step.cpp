@@ -30,7 +30,7 @@ TimeStep::TimeStep(const SystemSpec& spec, const Scheme& scheme, const TimeContr
     // The same fraction of the interface and diffusion limits as of the wave limit.
     if (limits_.interface) {
       interface_dt_ = cfl_ / stable.factor * limits_.interface->dt;
-      first_dt_ = with_interface(first_dt_);
+      first_dt_ = joined_dt(first_dt_, interface_dt_);
     }
     if (limits_.diffusion) {
       diffusion_dt_ = cfl_ / stable.factor * limits_.diffusion->dt;
@@ -75,13 +75,9 @@ std::int64_t TimeStep::planned_steps() const {
 double TimeStep::next_dt(double t, double max_speed_sq) const {
   if (!control_.automatic) return control_.dt;
   double dt = cfl_ * h_min_ / (c_max_ + std::sqrt(max_speed_sq));
-  if (limits_.interface) dt = with_interface(dt);
+  if (limits_.interface) dt = joined_dt(dt, interface_dt_);
   if (limits_.diffusion) dt = std::min(dt, diffusion_dt_);
   return std::min(dt, control_.end_time - t);
-}
-
-double TimeStep::with_interface(double dt) const {
-  return 1.0 / std::sqrt(1.0 / (dt * dt) + 1.0 / (interface_dt_ * interface_dt_));
 }
 
 bool TimeStep::done(std::int64_t step, double t) const {

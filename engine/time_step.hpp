@@ -79,10 +79,6 @@ class TimeStep {
   double h_min_ = 0.0, c_max_ = 0.0, cfl_ = 0.0, first_dt_ = 0.0, diffusion_dt_ = 0.0, interface_dt_ = 0.0;
   std::string wave_limit_text_;
   std::optional<TimeStepProblem> problem_;
-
-  // A CFL step dt with the same fraction of the interface limit:
-  // 1 / sqrt(1 / dt^2 + 1 / dt_i^2) (TimeStepLimit).
-  double with_interface(double dt) const;
 };
 
 }  // namespace flowmpm

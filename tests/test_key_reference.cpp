@@ -6,8 +6,8 @@
 // type given), so the shipped cases, which use every section and every
 // type, reach nearly every key; the probes below reach the rest (3D loads
 // with a combined region, a body force, a surface flux, a uniform initial
-// stress; a 3D rigid body moving along z against a contact group). A key that neither reaches fails the second direction until a
-// case uses it. Not covered: the sweep file
+// stress; a 3D rigid body moving along z against a contact group). A key
+// that neither reaches fails the second direction until a case uses it. Not covered: the sweep file
 // (docs/reference/sweep_file.md, its own reader) and the command line
 // (cli.md).
 #include <doctest/doctest.h>
