@@ -144,6 +144,8 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
   for (const auto& m : spec.materials) system.materials.push_back(m.model);
   for (int d = 0; d < D; ++d) system.gravity[d] = spec.gravity[d];
   system.flip_fraction = spec.flip_fraction;
+  system.velocity_update = spec.velocity_update;
+  system.xpic_order = spec.xpic_order;
   if (D == 2 && spec.plane_stress) system.stress_state = StressState::plane_stress;
   system.dt = spec.dt;
   if (spec.conducts_heat()) system.heat.emplace();
@@ -209,6 +211,8 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
       }
     }
     batch.v.assign(n, v0);
+    // APIC: a uniform initial velocity has no affine part.
+    if (spec.velocity_update == VelocityUpdate::apic) batch.affine.assign(n, std::array<double, D * D>{});
     if (spec.keep_initial_positions) batch.x0 = batch.x;
     batch.volume = list.volume;
     double top = 0.0;
@@ -274,6 +278,10 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
     system.batches.push_back(std::move(batch));
   }
   if (!spec.contacts.empty()) build_contact(spec, system);
+  if (spec.velocity_update == VelocityUpdate::xpic) {
+    system.xpic.resize(static_cast<std::size_t>(system.field_count()));
+    for (XpicNodes<D>& x : system.xpic) x.allocate(system.grid.node_count());
+  }
   // A node holding less than a millionth of the least particle capacity
   // only sees the far tail of a shape function: its transport update
   // dt Q / (mC) is noise, and it keeps its value.

@@ -1,0 +1,201 @@
+// The APIC and XPIC(m) velocity updates (docs/theory/transfers.md):
+//  - XPIC(1) is PIC, bit for bit: its correction w = (1 - m) u_1 is exactly 0.
+//  - A square spun at 5 rad/s about its centre for a quarter turn (no
+//    gravity, no support; E = 1 MPa, rho = 1000 kg/m^3, so that the
+//    centrifugal strain rho omega^2 r^2 / E stays 1e-3; 16 cells across,
+//    2 particles per cell per axis, MUSL): APIC turns it by omega t within 0.1 % with every shape
+//    function (measured: below 0.01 %), and with quadratic B-splines keeps
+//    its angular momentum sum m (x (x) v) + m (B^T : eps), B = C D_p, to round-off over the
+//    whole run (1e-10 relative; every transfer and the position update
+//    x += dt v_p keep it exactly, docs/theory/transfers.md); XPIC(5) turns
+//    it no worse than FLIP.
+//  - The two colliding blocks of configs/hard/impact_2d.toml with linear
+//    shape functions: APIC's and XPIC(5)'s energy balance error at most half
+//    of FLIP's (25 %), which cell-crossing noise makes.
+//  - The small-amplitude vibrating bar: APIC and XPIC(5) converge at the rate of FLIP.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+#include "discretisation/shapes/shape_bspline.hpp"
+#include "discretisation/shapes/shape_gimp.hpp"
+#include "discretisation/shapes/shape_linear.hpp"
+#include "test_helpers.hpp"
+
+using namespace flowmpm;
+
+namespace {
+
+std::string exact(double v) {
+  std::ostringstream s;
+  s.precision(17);
+  s << v;
+  return s.str();
+}
+
+template <int D, class Shape>
+ParticleSnapshot run_steps(const Case& c) {
+  auto sim = testing::simulation<D, Shape>(c);
+  for (std::int64_t s = 0; s < c.time_control.steps; ++s) sim.advance();
+  return sim.snapshot({"position", "velocity", "stress", "strain", "volume"});
+}
+
+template <class Shape>
+void check_xpic1_is_pic(const std::string& scheme) {
+  CAPTURE(Shape::name);
+  CAPTURE(scheme);
+  const std::vector<std::string> common = {std::string("analysis.shape_function=") + Shape::name,
+                                           "analysis.scheme=" + scheme};
+  auto with = [&](std::vector<std::string> more) {
+    more.insert(more.end(), common.begin(), common.end());
+    return read_case(testing::config("hard/impact_2d.toml"), more);
+  };
+  Case pic = with({"analysis.velocity_update=pic"}), xpic = with({"analysis.velocity_update=xpic", "analysis.xpic_order=1"});
+  pic.time_control.steps = xpic.time_control.steps = 100;
+  const ParticleSnapshot a = run_steps<2, Shape>(pic), b = run_steps<2, Shape>(xpic);
+  for (const char* name : {"position", "velocity", "stress", "strain", "volume"}) {
+    CAPTURE(name);
+    CHECK(a.find(name)->real == b.find(name)->real);
+  }
+}
+
+// The spinning square: 0.4 m across, centre (1, 1), n cells across it.
+std::string square_case(int n, const std::string& scheme = "musl") {
+  const double h = 0.4 / n;
+  return "[analysis]\ndimension = 2\nscheme = \"" + scheme + "\"\ndt = " + exact(0.01 * h) + "\nsteps = 1\n"
+         "[grid]\norigin = [" + exact(0.5 - 2 * h) + ", " + exact(0.5 - 2 * h) + "]\ncell_size = " + exact(h) +
+         "\ncells = [" + std::to_string(int(2.5 * n) + 4) + ", " + std::to_string(int(2.5 * n) + 4) + "]\n"
+         "[materials.stiff]\ntype = \"linear_elastic\"\ndensity = 1000.0\nyoungs_modulus = 1e6\npoisson_ratio = 0.3\n"
+         "[[bodies]]\nname = \"square\"\nmaterial = \"stiff\"\nparticles_per_cell = 2\nmin = [0.8, 0.8]\nmax = [1.2, 1.2]\n";
+}
+
+struct Spin {
+  double turned = 0.0;    // rad, the best rotation about the centroid
+  double expected = 0.0;  // omega t
+  double momentum_start = 0.0, momentum_end = 0.0;  // angular momentum about the origin (kg m^2/s per m)
+};
+
+// sum m (x (x) v)_z + m (B_yx - B_xy), B = C D_p with D_p = apic_inertia h^2.
+template <class Shape>
+double angular_momentum(const DiscreteSystem<2, Shape>& system) {
+  double L = 0.0;
+  for (const auto& b : system.batches) {
+    for (std::size_t p = 0; p < b.size(); ++p) {
+      L += b.mass[p] * (b.x[p][0] * b.v[p][1] - b.x[p][1] * b.v[p][0]);
+      if (!b.affine.empty()) {
+        const double inertia = Shape::apic_inertia * system.grid.h[0] * system.grid.h[0];
+        L += b.mass[p] * inertia * (b.affine[p][2] - b.affine[p][1]);
+      }
+    }
+  }
+  return L;
+}
+
+template <class Shape>
+Spin spin(int n, const std::string& update, const std::string& scheme = "musl") {
+  const double omega = 5.0, h = 0.4 / n, dt = 0.01 * h;  // 0.37 h / c
+  Case c = testing::case_from_text("spin", square_case(n, scheme),
+                                   {std::string("analysis.shape_function=") + Shape::name,
+                                    "analysis.velocity_update=" + update});
+  c.time_control.steps = std::lround(std::numbers::pi / (2.0 * omega) / dt);
+  auto sim = testing::simulation<2, Shape>(c);
+  auto& system = sim.system();
+  // Rigid rotation about (1, 1): v = omega e_z x (x - c), its gradient C.
+  for (auto& b : system.batches) {
+    for (std::size_t p = 0; p < b.size(); ++p) b.v[p] = omega * Vec<2>(-(b.x[p][1] - 1.0), b.x[p][0] - 1.0);
+    for (auto& C : b.affine) C = {0.0, -omega, omega, 0.0};
+  }
+  Spin s;
+  s.momentum_start = angular_momentum(system);
+  std::vector<Vec<2>> x0;
+  for (const auto& b : system.batches) x0.insert(x0.end(), b.x.begin(), b.x.end());
+  std::vector<std::uint32_t> id0;
+  for (const auto& b : system.batches) id0.insert(id0.end(), b.id.begin(), b.id.end());
+  for (std::int64_t k = 0; k < c.time_control.steps; ++k) sim.advance();
+  s.momentum_end = angular_momentum(system);
+  s.expected = omega * system.t;
+  // Start and end positions by particle id (the sorts permute the batch).
+  std::vector<Vec<2>> start(x0.size()), end(x0.size());
+  for (std::size_t i = 0; i < x0.size(); ++i) start[id0[i]] = x0[i];
+  for (const auto& b : system.batches)
+    for (std::size_t p = 0; p < b.size(); ++p) end[b.id[p]] = b.x[p];
+  Vec<2> c0 = Vec<2>::Zero(), c1 = Vec<2>::Zero();
+  for (std::size_t i = 0; i < start.size(); ++i) c0 += start[i] / start.size(), c1 += end[i] / end.size();
+  double cross = 0.0, dot = 0.0;
+  for (std::size_t i = 0; i < start.size(); ++i) {
+    const Vec<2> a = start[i] - c0, b = end[i] - c1;
+    cross += a[0] * b[1] - a[1] * b[0];
+    dot += a.dot(b);
+  }
+  s.turned = std::atan2(cross, dot);
+  return s;
+}
+
+double turn_error(const Spin& s) { return std::abs(s.turned / s.expected - 1.0); }
+
+double energy_error(const std::string& shape, const std::string& update) {
+  return testing::run(read_case(testing::config("hard/impact_2d.toml"),
+                                {"analysis.shape_function=" + shape, "analysis.velocity_update=" + update}))
+      .energy_error;
+}
+
+// The small-amplitude bar at n cells along its length (test_verification).
+std::map<std::string, double> vibration(const std::string& shape, const std::string& update, int n) {
+  const double h = 1.0 / n;
+  const RunSummary s = testing::run(read_case(
+      testing::config("verification/bar_vibration_small.toml"),
+      {"analysis.shape_function=" + shape, "analysis.velocity_update=" + update, "grid.cell_size=" + exact(h),
+       "grid.cells=[" + std::to_string(n + 8) + "]", "grid.origin=[" + exact(-2.0 * h) + "]",
+       "analysis.dt=" + exact(0.02 * h)}));
+  REQUIRE(s.status == RunStatus::completed);
+  return s.errors;
+}
+
+double rate(double coarse, double fine) { return std::log2(coarse / fine); }
+
+}  // namespace
+
+TEST_CASE("XPIC(1) is PIC, bit for bit") {
+  check_xpic1_is_pic<LinearShape>("usl");
+  check_xpic1_is_pic<QuadraticBSpline>("musl");
+  check_xpic1_is_pic<GimpShape>("usf");
+}
+
+TEST_CASE("a spinning square: APIC turns it a quarter turn and keeps its angular momentum; XPIC(5) no worse than FLIP") {
+  const Spin apic = spin<QuadraticBSpline>(16, "apic");
+  MESSAGE("APIC bspline2: turned " << apic.turned << " rad of " << apic.expected << ", angular momentum "
+                                   << apic.momentum_end / apic.momentum_start - 1.0 << " off");
+  CHECK(turn_error(apic) < 1e-3);
+  CHECK(std::abs(apic.momentum_end / apic.momentum_start - 1.0) < 1e-10);
+  for (const Spin& s : {spin<LinearShape>(16, "apic"), spin<GimpShape>(16, "apic"), spin<CubicBSpline>(16, "apic")}) {
+    MESSAGE("APIC: turned " << s.turned << " rad of " << s.expected);
+    CHECK(turn_error(s) < 1e-3);
+  }
+  const Spin flip = spin<QuadraticBSpline>(16, "flip"), xpic = spin<QuadraticBSpline>(16, "xpic");
+  MESSAGE("FLIP: turned " << flip.turned << ", XPIC(5): " << xpic.turned << " of " << flip.expected);
+  CHECK(turn_error(xpic) <= turn_error(flip));
+}
+
+TEST_CASE("colliding blocks, linear shape functions: APIC and XPIC(5) lose at most half of FLIP's energy") {
+  const double flip = energy_error("linear", "flip"), apic = energy_error("linear", "apic"),
+               xpic = energy_error("linear", "xpic");
+  MESSAGE("energy balance error: FLIP " << flip << ", APIC " << apic << ", XPIC(5) " << xpic);
+  CHECK(apic <= 0.5 * flip);
+  CHECK(xpic <= 0.5 * flip);
+}
+
+TEST_CASE("small-amplitude bar vibration: APIC and XPIC(5) converge as FLIP does") {
+  for (std::string shape : {"linear", "bspline2"}) {
+    for (std::string update : {"flip", "apic", "xpic"}) {
+      CAPTURE(shape);
+      CAPTURE(update);
+      const auto coarse = vibration(shape, update, 64), fine = vibration(shape, update, 128);
+      MESSAGE(shape << " " << update << ": displacement rate " << rate(coarse.at("displacement"), fine.at("displacement"))
+                    << ", velocity rate " << rate(coarse.at("velocity"), fine.at("velocity")));
+      CHECK(rate(coarse.at("displacement"), fine.at("displacement")) >= 1.8);
+      CHECK(rate(coarse.at("velocity"), fine.at("velocity")) >= 1.8);
+    }
+  }
+}
