@@ -199,3 +199,22 @@ TEST_CASE("small-amplitude bar vibration: APIC and XPIC(5) converge as FLIP does
     }
   }
 }
+
+TEST_CASE("scratch") {
+  for (std::string scheme : {"usl", "musl", "usf"}) {
+    for (std::string u : {"flip", "apic", "pic"}) {
+      try {
+        const Spin s = spin<LinearShape>(16, u, scheme);
+        MESSAGE("linear " << scheme << " " << u << ": turned " << s.turned << " of " << s.expected << " L " << s.momentum_end / s.momentum_start - 1);
+      } catch (const std::exception& e) {
+        MESSAGE("linear " << scheme << " " << u << ": " << e.what());
+      }
+      try {
+        const Spin s = spin<GimpShape>(16, u, scheme);
+        MESSAGE("gimp " << scheme << " " << u << ": turned " << s.turned << " of " << s.expected << " L " << s.momentum_end / s.momentum_start - 1);
+      } catch (const std::exception& e) {
+        MESSAGE("gimp " << scheme << " " << u << ": " << e.what());
+      }
+    }
+  }
+}
