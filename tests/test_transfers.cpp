@@ -1,9 +1,8 @@
 // The APIC and XPIC(m) velocity updates (docs/theory/transfers.md):
 //  - XPIC(1) is PIC, bit for bit: its correction w = (1 - m) u_1 is exactly 0.
-//  - A square spun at 5 rad/s about its centre for a quarter turn (no
-//    gravity, no support; E = 1 MPa, rho = 1000 kg/m^3, so that the
-//    centrifugal strain rho omega^2 r^2 / E stays 1e-3; 16 cells across,
-//    2 particles per cell per axis, MUSL): APIC turns it by omega t within 0.1 % with every shape
+//  - The rotating square of configs/verification (0.4 m, spun at 5 rad/s
+//    about its centre for a quarter turn, nothing acting on it) at 16
+//    cells across, MUSL, dt = 0.46 h / c): APIC turns it by omega t within 0.1 % with every shape
 //    function (measured: below 0.01 %), and with quadratic B-splines keeps
 //    its angular momentum sum m (x (x) v) + m (B^T : eps), B = C D_p, to round-off over the
 //    whole run (1e-10 relative; every transfer and the position update
@@ -61,16 +60,6 @@ void check_xpic1_is_pic(const std::string& scheme) {
   }
 }
 
-// The spinning square: 0.4 m across, centre (1, 1), n cells across it.
-std::string square_case(int n, const std::string& scheme = "musl") {
-  const double h = 0.4 / n;
-  return "[analysis]\ndimension = 2\nscheme = \"" + scheme + "\"\ndt = " + exact(0.01 * h) + "\nsteps = 1\n"
-         "[grid]\norigin = [" + exact(0.5 - 2 * h) + ", " + exact(0.5 - 2 * h) + "]\ncell_size = " + exact(h) +
-         "\ncells = [" + std::to_string(int(2.5 * n) + 4) + ", " + std::to_string(int(2.5 * n) + 4) + "]\n"
-         "[materials.stiff]\ntype = \"linear_elastic\"\ndensity = 1000.0\nyoungs_modulus = 1e6\npoisson_ratio = 0.3\n"
-         "[[bodies]]\nname = \"square\"\nmaterial = \"stiff\"\nparticles_per_cell = 2\nmin = [0.8, 0.8]\nmax = [1.2, 1.2]\n";
-}
-
 struct Spin {
   double turned = 0.0;    // rad, the best rotation about the centroid
   double expected = 0.0;  // omega t
@@ -93,27 +82,27 @@ double angular_momentum(const DiscreteSystem<2, Shape>& system) {
   return L;
 }
 
+// The rotating square of configs/verification at n cells across, with a
+// fixed dt of 0.46 h / c (c = 116 m/s).
 template <class Shape>
 Spin spin(int n, const std::string& update, const std::string& scheme = "musl") {
-  const double omega = 5.0, h = 0.4 / n, dt = 0.01 * h;  // 0.37 h / c
-  Case c = testing::case_from_text("spin", square_case(n, scheme),
-                                   {std::string("analysis.shape_function=") + Shape::name,
-                                    "analysis.velocity_update=" + update});
-  c.time_control.steps = std::lround(std::numbers::pi / (2.0 * omega) / dt);
+  const double h = 0.4 / n, dt = 0.004 * h;
+  const std::int64_t steps = std::lround(0.1 * std::numbers::pi / dt);
+  const Case c = read_case(testing::config("verification/rotating_square.toml"),
+                           {std::string("analysis.shape_function=") + Shape::name, "analysis.velocity_update=" + update,
+                            "analysis.scheme=" + scheme, "grid.cell_size=" + exact(h),
+                            "grid.cells=[" + std::to_string(5 * n) + ", " + std::to_string(5 * n) + "]",
+                            "analysis.dt=" + exact(dt), "analysis.end_time=" + exact(steps * dt)});
   auto sim = testing::simulation<2, Shape>(c);
   auto& system = sim.system();
-  // Rigid rotation about (1, 1): v = omega e_z x (x - c), its gradient C.
-  for (auto& b : system.batches) {
-    for (std::size_t p = 0; p < b.size(); ++p) b.v[p] = omega * Vec<2>(-(b.x[p][1] - 1.0), b.x[p][0] - 1.0);
-    for (auto& C : b.affine) C = {0.0, -omega, omega, 0.0};
-  }
+  const double omega = 5.0;
   Spin s;
   s.momentum_start = angular_momentum(system);
   std::vector<Vec<2>> x0;
   for (const auto& b : system.batches) x0.insert(x0.end(), b.x.begin(), b.x.end());
   std::vector<std::uint32_t> id0;
   for (const auto& b : system.batches) id0.insert(id0.end(), b.id.begin(), b.id.end());
-  for (std::int64_t k = 0; k < c.time_control.steps; ++k) sim.advance();
+  for (std::int64_t k = 0; k < steps; ++k) sim.advance();
   s.momentum_end = angular_momentum(system);
   s.expected = omega * system.t;
   // Start and end positions by particle id (the sorts permute the batch).
@@ -200,21 +189,3 @@ TEST_CASE("small-amplitude bar vibration: APIC and XPIC(5) converge as FLIP does
   }
 }
 
-TEST_CASE("scratch") {
-  for (std::string scheme : {"usl", "musl", "usf"}) {
-    for (std::string u : {"flip", "apic", "pic"}) {
-      try {
-        const Spin s = spin<LinearShape>(16, u, scheme);
-        MESSAGE("linear " << scheme << " " << u << ": turned " << s.turned << " of " << s.expected << " L " << s.momentum_end / s.momentum_start - 1);
-      } catch (const std::exception& e) {
-        MESSAGE("linear " << scheme << " " << u << ": " << e.what());
-      }
-      try {
-        const Spin s = spin<GimpShape>(16, u, scheme);
-        MESSAGE("gimp " << scheme << " " << u << ": turned " << s.turned << " of " << s.expected << " L " << s.momentum_end / s.momentum_start - 1);
-      } catch (const std::exception& e) {
-        MESSAGE("gimp " << scheme << " " << u << ": " << e.what());
-      }
-    }
-  }
-}
