@@ -85,14 +85,14 @@ double angular_momentum(const DiscreteSystem<2, Shape>& system) {
 // The rotating square of configs/verification at n cells across, with a
 // fixed dt of 0.46 h / c (c = 116 m/s).
 template <class Shape>
-Spin spin(int n, const std::string& update, const std::string& scheme = "musl") {
+Spin spin(int n, const std::string& update, const std::string& scheme = "musl", std::vector<std::string> more = {}) {
   const double h = 0.4 / n, dt = 0.004 * h;
   const std::int64_t steps = std::lround(0.1 * std::numbers::pi / dt);
-  const Case c = read_case(testing::config("verification/rotating_square.toml"),
-                           {std::string("analysis.shape_function=") + Shape::name, "analysis.velocity_update=" + update,
-                            "analysis.scheme=" + scheme, "grid.cell_size=" + exact(h),
-                            "grid.cells=[" + std::to_string(5 * n) + ", " + std::to_string(5 * n) + "]",
-                            "analysis.dt=" + exact(dt), "analysis.end_time=" + exact(steps * dt)});
+  more.insert(more.end(), {std::string("analysis.shape_function=") + Shape::name, "analysis.velocity_update=" + update,
+                           "analysis.scheme=" + scheme, "grid.cell_size=" + exact(h),
+                           "grid.cells=[" + std::to_string(5 * n) + ", " + std::to_string(5 * n) + "]",
+                           "analysis.dt=" + exact(dt), "analysis.end_time=" + exact(steps * dt)});
+  const Case c = read_case(testing::config("verification/rotating_square.toml"), more);
   auto sim = testing::simulation<2, Shape>(c);
   auto& system = sim.system();
   const double omega = 5.0;
@@ -189,3 +189,14 @@ TEST_CASE("small-amplitude bar vibration: APIC and XPIC(5) converge as FLIP does
   }
 }
 
+
+TEST_CASE("scratch") {
+  for (std::string scheme : {"usl", "musl", "usf"}) {
+    const Spin t = spin<LinearShape>(16, "apic", scheme);
+    MESSAGE("linear apic 16 " << scheme << ": turned " << t.turned << " of " << t.expected << " L " << t.momentum_end / t.momentum_start - 1);
+  }
+  for (std::string m : {"2", "5", "20", "50"}) {
+    const Spin s = spin<QuadraticBSpline>(8, "xpic", "usl", {"analysis.xpic_order=" + m});
+    MESSAGE("bspline2 usl xpic " << m << ": turned " << s.turned << " of " << s.expected << " L " << s.momentum_end / s.momentum_start - 1);
+  }
+}
