@@ -205,6 +205,14 @@ template <int D, class Shape>
   if (!stays) system.flags.resort_needed.store(true, std::memory_order_relaxed);
 }
 
+// p_I / m_I at nodes n, n + 1 (Count = 2) or n (Count = 1); 0 on an empty node.
+template <int Count>
+[[gnu::always_inline]] inline NodePair momentum_velocity(const double* p, const double* m) {
+  NodePair v = {};
+  for (int lane = 0; lane < Count; ++lane) v[lane] = m[lane] > 0.0 ? p[lane] / m[lane] : 0.0;
+  return v;
+}
+
 // One pass over the particles: g2p_motion, g2p_stress, or both (USL), from
 // one stencil per particle at its position at the start of the pass.
 // `Update`: flip for FLIP, PIC and their blend (flip_fraction), apic, xpic.
@@ -214,6 +222,11 @@ void g2p(DiscreteSystem<D, Shape>& system) {
   constexpr bool xpic = Motion && Update == VelocityUpdate::xpic;
   // APIC's G_Ip is the gradient itself where the shape function has no D_p.
   constexpr bool affine_is_gradient = Shape::apic_inertia == 0.0;
+  // APIC with held nodes (linear shape functions, tasks/grid_update.hpp
+  // held_node): v_p and x_p from p_I / m_I, which a held node updates too,
+  // so that momentum is kept and no torque is lost; C_p from the held
+  // velocity, bounded where N_Ip vanishes.
+  constexpr bool from_momentum = apic && Shape::gradient_jumps;
   using Layout = BlockLayout<D, Shape>;
   const auto& grid = system.grid;
   const double a = system.flip_fraction, dt = system.dt;
@@ -248,7 +261,10 @@ void g2p(DiscreteSystem<D, Shape>& system) {
       // 3 % of the step rate).
       const double* velocity[D];
       const double* velocity_change[D];
+      [[maybe_unused]] const double* momentum[D];
+      [[maybe_unused]] const double* const mass = field.mass.data();
       for (int d = 0; d < D; ++d) {
+        if constexpr (from_momentum) momentum[d] = field.momentum[d].data();
         velocity[d] = field.velocity[d].data();
         velocity_change[d] = xpic ? system.xpic[b.field].correction[d].data() : field.velocity_change[d].data();
       }
@@ -268,7 +284,11 @@ void g2p(DiscreteSystem<D, Shape>& system) {
           for (int i = 0; i < D; ++i) {
             const NodePair v = load_nodes<Count>(velocity[i] + n);
             if constexpr (Motion) {
-              v_sum[i] += N * v;
+              if constexpr (from_momentum) {
+                v_sum[i] += N * momentum_velocity<Count>(momentum[i] + n, mass + n);
+              } else {
+                v_sum[i] += N * v;
+              }
               if constexpr (!apic) dv_sum[i] += N * load_nodes<Count>(velocity_change[i] + n);
             }
             if constexpr (Stress)

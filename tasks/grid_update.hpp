@@ -110,8 +110,9 @@ void grid_velocity(DiscreteSystem<D, Shape>& system) {
 // edge), and v_I + f_I dt / m_I would throw the stress update (USL) and the
 // positions off by (c dt / h)^2 / N_Ip times the strain in one step
 // (docs/STABILITY.md); APIC's affine velocity sum_I v_I (x) dN_Ip would take
-// f_I dt / m_I whole (docs/theory/transfers.md). Such a node hands the stress,
-// position and affine velocity updates its
+// f_I dt / m_I whole (docs/theory/transfers.md; APIC's v_p and x_p take
+// p_I / m_I instead). Such a node hands the stress, position and affine
+// velocity updates its
 // start-of-step velocity, as USF and MUSL do at every node, while FLIP still
 // gives its particles the whole increment f_I dt / m_I (N_Ip f_I dt / m_I
 // is bounded), so that momentum is kept.
