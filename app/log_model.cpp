@@ -68,7 +68,8 @@ void log_system(spdlog::logger& log, const Case& c, const Simulation<D, Shape>& 
            velocity_update_name(c.system.velocity_update),
            c.system.velocity_update == VelocityUpdate::blend
                ? " (FLIP fraction " + std::to_string(system.flip_fraction) + ")"
-               : "");
+           : c.system.velocity_update == VelocityUpdate::xpic ? " (order " + std::to_string(system.xpic_order) + ")"
+                                                               : "");
   std::string cells;
   for (int d = 0; d < D; ++d) cells += (d ? " x " : "") + std::to_string(system.grid.cells[d]);
   log.info("grid: {} cells, {} nodes, {} blocks of {}^{} cells ({} occupied)", cells,

@@ -25,6 +25,9 @@
 // (the engine's wiring) and with it run before them (one after the other),
 // the cost of transport per particle-step, and what running the branches
 // side by side gains.
+// With --transfers the program reports per size the rates with the FLIP,
+// APIC and XPIC(5) velocity updates, 1 and 2 threads, and APIC's and
+// XPIC's over FLIP's.
 // With --contact the block is two half-blocks (y below and above 0.5 m),
 // the upper resting on the lower, in Coulomb contact (mu = 0.3): the
 // program reports per size the rates of the one-body block and of the two
@@ -33,8 +36,9 @@
 //
 //   build/bench/bench_throughput [--sizes 1e4,1e5,1e6] [--particle-steps N]
 //                                [--repeats R] [--shape linear|gimp|bspline2|bspline3]
-//                                [--transport heat|both] [--contact] [--csv FILE]
+//                                [--transport heat|both] [--contact] [--transfers] [--csv FILE]
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -314,6 +318,52 @@ void contact_table(const ShapeRunner& runner, const std::vector<double>& sizes, 
   }
 }
 
+// The transfers table: per size, the median rates with the FLIP, APIC and
+// XPIC(5) velocity updates (docs/theory/transfers.md), 1 and 2 threads, and
+// APIC's and XPIC's rates over FLIP's.
+void transfers_table(const ShapeRunner& runner, const std::vector<double>& sizes, double particle_steps, int repeats,
+                     const std::string& shape, std::ofstream& csv) {
+  std::printf("3D elastic block on a fixed base under gravity, USL, %s shape functions: FLIP, APIC and XPIC(5);"
+              " medians of %d runs\n", shape.c_str(), repeats);
+  std::printf("%10s %6s %9s %9s %9s %9s %9s %9s %7s %7s %7s %7s\n", "particles", "steps", "FLIP 1t", "APIC 1t", "XPIC 1t",
+              "FLIP 2t", "APIC 2t", "XPIC 2t", "A/F 1t", "A/F 2t", "X/F 1t", "X/F 2t");
+  std::printf("%10s %6s %9s %9s %9s %9s %9s %9s\n", "", "", "Mp-st/s", "Mp-st/s", "Mp-st/s", "Mp-st/s", "Mp-st/s",
+              "Mp-st/s");
+  if (csv) csv << "particles,steps,rate_flip_1t,rate_apic_1t,rate_xpic_1t,rate_flip_2t,rate_apic_2t,rate_xpic_2t\n";
+  for (double size : sizes) {
+    std::array<SystemSpec, 3> cases;
+    const VelocityUpdate updates[] = {VelocityUpdate::flip, VelocityUpdate::apic, VelocityUpdate::xpic};
+    for (int u = 0; u < 3; ++u) {
+      cases[u] = block_case(static_cast<std::size_t>(size), shape);
+      cases[u].velocity_update = updates[u];
+      cases[u].flip_fraction = u == 0 ? 1.0 : 0.0;
+    }
+    const int steps = std::max(5, static_cast<int>(particle_steps / size));
+    std::array<std::vector<double>, 6> rates;
+    std::size_t n = 0;
+    for (int r = 0; r < repeats; ++r) {
+      for (int threads : {1, 2}) {
+        for (int u = 0; u < 3; ++u) {
+          const Timing t = runner.time_steps(cases[u], threads, false, steps, TransportBranch::beside);
+          n = t.particles;
+          rates[3 * (threads - 1) + u].push_back(t.rate);
+        }
+      }
+    }
+    std::array<double, 6> m;
+    for (int i = 0; i < 6; ++i) m[i] = median(rates[i]);
+    std::printf("%10zu %6d %9.2f %9.2f %9.2f %9.2f %9.2f %9.2f %7.2f %7.2f %7.2f %7.2f\n", n, steps, m[0] / 1e6,
+                m[1] / 1e6, m[2] / 1e6, m[3] / 1e6, m[4] / 1e6, m[5] / 1e6, m[1] / m[0], m[4] / m[3], m[2] / m[0],
+                m[5] / m[3]);
+    std::fflush(stdout);
+    if (csv) {
+      csv << n << "," << steps;
+      for (double rate : m) csv << "," << rate;
+      csv << "\n";
+    }
+  }
+}
+
 std::vector<double> parse_sizes(const std::string& text) {
   std::vector<double> sizes;
   std::stringstream ss(text);
@@ -328,7 +378,7 @@ int main(int argc, char** argv) {
   double particle_steps = 3e7;  // per measurement, so that each lasts ~1 s or more
   int repeats = 3;
   std::string csv_path, shape = "linear", transport;
-  bool contact = false;
+  bool contact = false, transfers = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto next = [&] {
@@ -344,6 +394,7 @@ int main(int argc, char** argv) {
     else if (a == "--shape") shape = next();
     else if (a == "--csv") csv_path = next();
     else if (a == "--contact") contact = true;
+    else if (a == "--transfers") transfers = true;
     else if (a == "--transport") {
       transport = next();
       if (transport != "heat" && transport != "both") {
@@ -353,7 +404,7 @@ int main(int argc, char** argv) {
     }
     else {
       std::cerr << "usage: bench_throughput [--sizes 1e4,1e5,1e6] [--particle-steps 3e7] [--repeats 3] [--shape linear] "
-                   "[--transport heat|both] [--contact] [--csv FILE]\n";
+                   "[--transport heat|both] [--contact] [--transfers] [--csv FILE]\n";
       return a == "--help" ? 0 : 1;
     }
   }
@@ -363,6 +414,12 @@ int main(int argc, char** argv) {
     std::ofstream csv;
     if (!csv_path.empty()) csv.open(csv_path);
     contact_table(runner, sizes, particle_steps, repeats, shape, csv);
+    return 0;
+  }
+  if (transfers) {
+    std::ofstream csv;
+    if (!csv_path.empty()) csv.open(csv_path);
+    transfers_table(runner, sizes, particle_steps, repeats, shape, csv);
     return 0;
   }
   if (!transport.empty()) {

@@ -167,6 +167,8 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
   for (const auto& m : spec.materials) system.materials.push_back(m.model);
   for (int d = 0; d < D; ++d) system.gravity[d] = spec.gravity[d];
   system.flip_fraction = spec.flip_fraction;
+  system.velocity_update = spec.velocity_update;
+  system.xpic_order = spec.xpic_order;
   if (D == 2 && spec.plane_stress) system.stress_state = StressState::plane_stress;
   system.dt = spec.dt;
   if (spec.conducts_heat()) system.heat.emplace();
@@ -233,6 +235,16 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
     }
     batch.v.assign(n, v0);
     if (body.angular_velocity != Vec3{}) detail::add_rigid_spin(batch, list, body.angular_velocity);
+    // APIC: the initial velocity's gradient, the spin's skew matrix
+    // C_ij = -e_ijk omega_k (0 for a uniform velocity).
+    if (spec.velocity_update == VelocityUpdate::apic) {
+      const Vec3& w = body.angular_velocity;
+      const double spin[3][3] = {{0.0, -w[2], w[1]}, {w[2], 0.0, -w[0]}, {-w[1], w[0], 0.0}};
+      std::array<double, D * D> C;
+      for (int i = 0; i < D; ++i)
+        for (int j = 0; j < D; ++j) C[D * i + j] = spin[i][j];
+      batch.affine.assign(n, C);
+    }
     if (spec.keep_initial_positions) batch.x0 = batch.x;
     batch.volume = list.volume;
     double top = 0.0;
@@ -298,6 +310,10 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
     system.batches.push_back(std::move(batch));
   }
   if (!spec.contacts.empty()) build_contact(spec, system);
+  if (spec.velocity_update == VelocityUpdate::xpic) {
+    system.xpic.resize(static_cast<std::size_t>(system.field_count()));
+    for (XpicNodes<D>& x : system.xpic) x.allocate(system.grid.node_count());
+  }
   // A node holding less than a millionth of the least particle capacity
   // only sees the far tail of a shape function: its transport update
   // dt Q / (mC) is noise, and it keeps its value.

@@ -17,6 +17,8 @@
 #include "discretisation/grid/grid.hpp"
 #include "discretisation/nonlocal/nonlocal_bins.hpp"
 #include "discretisation/grid/particles.hpp"
+#include "discretisation/grid/xpic_nodes.hpp"
+#include "discretisation/velocity_update.hpp"
 #include "materials/material.hpp"
 #include "materials/stress_state.hpp"
 
@@ -192,6 +194,12 @@ struct DiscreteSystem : SystemScalars {
   ExternalLoads<D> loads;          // tractions, pressures, nodal and body forces
   std::optional<Damping> damping;  // quasi-static damping, if the case has it
   double flip_fraction = 1.0;
+  // APIC: the particles carry their affine velocity (ParticleBatch::affine);
+  // XPIC(m): the nodal fields of its projections, one per velocity field
+  // (tasks/xpic.hpp), empty otherwise.
+  VelocityUpdate velocity_update = VelocityUpdate::flip;
+  int xpic_order = 5;
+  std::vector<XpicNodes<D>> xpic;
   // Nonlocal averages: present only when a model asks for them
   // (discretisation/nonlocal/nonlocal_average.hpp, tasks/nonlocal_settle.hpp).
   std::optional<NonlocalAverages<D>> nonlocal;

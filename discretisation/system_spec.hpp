@@ -17,21 +17,10 @@
 #include "discretisation/loads/loads.hpp"
 #include "discretisation/grid/particle_list.hpp"
 #include "discretisation/shapes/shape_functions.hpp"
+#include "discretisation/velocity_update.hpp"
 #include "materials/material.hpp"
 
 namespace flowmpm {
-
-// How the particles' velocity is updated from the grid (docs/theory/step.md): FLIP adds the grid's velocity change, PIC takes the grid's
-// velocity, blend mixes them by flip_fraction.
-enum class VelocityUpdate { flip, pic, blend };
-inline const char* velocity_update_name(VelocityUpdate u) {
-  switch (u) {
-    case VelocityUpdate::flip: return "flip";
-    case VelocityUpdate::pic: return "pic";
-    case VelocityUpdate::blend: return "blend";
-  }
-  return "";
-}
 
 struct GridSpec {
   Vec3 origin{};
@@ -133,6 +122,7 @@ struct SystemSpec {
   ShapeChoice shape_function;             // the shape function (discretisation/shapes/shape_functions.hpp)
   VelocityUpdate velocity_update = VelocityUpdate::flip;
   double flip_fraction = 1.0;             // 1: FLIP, 0: PIC
+  int xpic_order = 5;                     // m of XPIC(m), with velocity_update = xpic
   Vec3 gravity{};                         // m/s^2
   double dt = 0.0;                        // the first step's time step (s)
   bool keep_initial_positions = false;    // store x0 (a reference measures from it)

@@ -29,9 +29,12 @@ Simulation<D, Shape>::Simulation(const SystemSpec& spec, const Wiring& wiring, d
   for (const StageGroup& group : graph_.wiring().nodes) passes_.push_back(stage_pass<D, Shape>(group));
   build_system(spec, system_);
   // Nodes too light for their stiffness are held only where the stress
-  // update sees the updated grid velocity (tasks/grid_update.hpp held_node).
+  // update sees the updated grid velocity (tasks/grid_update.hpp held_node),
+  // or APIC's affine velocity its gradient (tasks/g2p.hpp): where N_Ip
+  // vanishes dN_Ip does not, and the affine velocity would take the light
+  // node's whole f_I dt / m_I (a spinning square blew up in 60 steps, MUSL).
   if constexpr (Shape::gradient_jumps)
-    if (wiring.stress_from_updated_grid())
+    if (wiring.stress_from_updated_grid() || spec.velocity_update == VelocityUpdate::apic)
       for (int k = 0; k < system_.field_count(); ++k) system_.field(k).stiffness.assign(system_.grid.node_count(), 0.0);
 }
 

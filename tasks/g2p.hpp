@@ -1,7 +1,11 @@
 // Grid-to-particle stages (docs/theory/step.md).
 // g2p_motion: v_p <- a (v_p + sum_I N_Ip dv_I) + (1 - a) sum_I N_Ip v_I
 //             (a = 1 FLIP, a = 0 PIC), x_p <- x_p + dt sum_I N_Ip v_I,
-//             with v_I the velocity after grid_integrate.
+//             with v_I the velocity after grid_integrate;
+//             APIC: v_p <- sum_I N_Ip v_I, C_p <- sum_I v_I (x) G_Ip
+//             (Stencil's StencilFactor::affine) [Jiang 2015];
+//             XPIC(m): v_p <- sum_I N_Ip (v_I - w_I) (tasks/xpic.hpp);
+//             docs/theory/transfers.md.
 // g2p_stress: L_p = sum_I v_I (x) dN_Ip, d eps = sym(L_p) dt, the material
 //             update sigma(d eps), eps += d eps, V_p *= 1 + tr(d eps); a
 //             model asking for nonlocal averages gets them and keeps its
@@ -19,6 +23,7 @@
 
 #include "discretisation/grid/stencil.hpp"
 #include "tasks/parallel_blocks.hpp"
+#include "tasks/xpic.hpp"
 
 namespace flowmpm {
 
@@ -200,10 +205,28 @@ template <int D, class Shape>
   if (!stays) system.flags.resort_needed.store(true, std::memory_order_relaxed);
 }
 
+// p_I / m_I at nodes n, n + 1 (Count = 2) or n (Count = 1); 0 on an empty node.
+template <int Count>
+[[gnu::always_inline]] inline NodePair momentum_velocity(const double* p, const double* m) {
+  NodePair v = {};
+  for (int lane = 0; lane < Count; ++lane) v[lane] = m[lane] > 0.0 ? p[lane] / m[lane] : 0.0;
+  return v;
+}
+
 // One pass over the particles: g2p_motion, g2p_stress, or both (USL), from
 // one stencil per particle at its position at the start of the pass.
-template <int D, class Shape, bool Motion, bool Stress>
+// `Update`: flip for FLIP, PIC and their blend (flip_fraction), apic, xpic.
+template <int D, class Shape, bool Motion, bool Stress, VelocityUpdate Update = VelocityUpdate::flip>
 void g2p(DiscreteSystem<D, Shape>& system) {
+  constexpr bool apic = Motion && Update == VelocityUpdate::apic;
+  constexpr bool xpic = Motion && Update == VelocityUpdate::xpic;
+  // APIC's G_Ip is the gradient itself where the shape function has no D_p.
+  constexpr bool affine_is_gradient = Shape::apic_inertia == 0.0;
+  // APIC with held nodes (linear shape functions, tasks/grid_update.hpp
+  // held_node): v_p and x_p from p_I / m_I, which a held node updates too,
+  // so that momentum is kept and no torque is lost; C_p from the held
+  // velocity, bounded where N_Ip vanishes.
+  constexpr bool from_momentum = apic && Shape::gradient_jumps;
   using Layout = BlockLayout<D, Shape>;
   const auto& grid = system.grid;
   const double a = system.flip_fraction, dt = system.dt;
@@ -238,25 +261,48 @@ void g2p(DiscreteSystem<D, Shape>& system) {
       // 3 % of the step rate).
       const double* velocity[D];
       const double* velocity_change[D];
+      [[maybe_unused]] const double* momentum[D];
+      [[maybe_unused]] const double* const mass = field.mass.data();
       for (int d = 0; d < D; ++d) {
+        if constexpr (from_momentum) momentum[d] = field.momentum[d].data();
         velocity[d] = field.velocity[d].data();
-        velocity_change[d] = field.velocity_change[d].data();
+        velocity_change[d] = xpic ? system.xpic[b.field].correction[d].data() : field.velocity_change[d].data();
       }
+      using Affine = Stencil<D, Shape, true, StencilFactor::affine>;
       for (std::uint32_t p = first; p < last; ++p) {
-        const Stencil<D, Shape, Stress> s(grid, b.x[p], b.half_width);
-        // Sums over the stencil, two nodes per lane pair, then the lanes added.
-        NodePair v_sum[D] = {}, dv_sum[D] = {}, L_sum[D][D] = {};
+        const Stencil<D, Shape, Stress || (apic && affine_is_gradient)> s(grid, b.x[p], b.half_width);
+        [[maybe_unused]] const auto affine = [&] {
+          if constexpr (apic && !affine_is_gradient) return Affine(grid, b.x[p], b.half_width);
+          else return 0;
+        }();
+        // Sums over the stencil, two nodes per lane pair, then the lanes
+        // added. dv_sum: FLIP's velocity change, or XPIC's correction w.
+        NodePair v_sum[D] = {}, dv_sum[D] = {}, L_sum[D][D] = {}, C_sum[D][D] = {};
         s.for_each_node_pair([&]<int Count>(int line, int k, std::size_t n) {
           const auto w = s.template pair_weights<Count>(line, k);
           const NodePair N = w.N;
           for (int i = 0; i < D; ++i) {
             const NodePair v = load_nodes<Count>(velocity[i] + n);
             if constexpr (Motion) {
-              v_sum[i] += N * v;
-              dv_sum[i] += N * load_nodes<Count>(velocity_change[i] + n);
+              if constexpr (from_momentum) {
+                v_sum[i] += N * momentum_velocity<Count>(momentum[i] + n, mass + n);
+              } else {
+                v_sum[i] += N * v;
+              }
+              if constexpr (!apic) dv_sum[i] += N * load_nodes<Count>(velocity_change[i] + n);
             }
             if constexpr (Stress)
               for (int j = 0; j < D; ++j) L_sum[i][j] += v * w.dN[j];
+          }
+          if constexpr (apic) {
+            const auto G = [&] {
+              if constexpr (affine_is_gradient) return w;
+              else return affine.template pair_weights<Count>(line, k);
+            }();
+            for (int i = 0; i < D; ++i) {
+              const NodePair v = load_nodes<Count>(velocity[i] + n);
+              for (int j = 0; j < D; ++j) C_sum[i][j] += v * G.dN[j];
+            }
           }
         });
         Vec<D> v_grid, dv;
@@ -287,7 +333,12 @@ void g2p(DiscreteSystem<D, Shape>& system) {
               stays = stays && c_new[d] >= stay_lo[d] && c_new[d] <= stay_hi[d];
             }
           }
-          const Vec<D> v_new = a * (b.v[p] + dv) + (1.0 - a) * v_grid;
+          Vec<D> v_new;
+          if constexpr (apic || xpic) {
+            v_new = xpic ? Vec<D>(v_grid - dv) : v_grid;
+          } else {
+            v_new = a * (b.v[p] + dv) + (1.0 - a) * v_grid;
+          }
           if (!inside || !one_cell || !v_new.allFinite()) {
             system.flags.fail("a particle at " + position_text<D>(b.x[p]) + " would move to " +
                              position_text<D>(x_new) +
@@ -300,6 +351,9 @@ void g2p(DiscreteSystem<D, Shape>& system) {
           energy.kinetic += 0.5 * b.mass[p] * v_new.squaredNorm();
           b.v[p] = v_new;
           b.x[p] = x_new;
+          if constexpr (apic)
+            for (int i = 0; i < D; ++i)
+              for (int j = 0; j < D; ++j) b.affine[p][D * i + j] = sum(C_sum[i][j]);
           block_max_sq = std::max(block_max_sq, v_new.squaredNorm());
           if (!stays) system.flags.resort_needed.store(true, std::memory_order_relaxed);
         }
@@ -324,9 +378,28 @@ void g2p(DiscreteSystem<D, Shape>& system) {
 
 }  // namespace detail
 
+namespace detail {
+
+// g2p_motion (with g2p_stress under USL) for the scene's velocity update;
+// XPIC's correction first, while the particles are still where the step
+// found them.
+template <int D, class Shape, bool Stress>
+void g2p_with_motion(DiscreteSystem<D, Shape>& system) {
+  switch (system.velocity_update) {
+    case VelocityUpdate::apic: g2p<D, Shape, true, Stress, VelocityUpdate::apic>(system); return;
+    case VelocityUpdate::xpic:
+      xpic_correction(system);
+      g2p<D, Shape, true, Stress, VelocityUpdate::xpic>(system);
+      return;
+    default: g2p<D, Shape, true, Stress>(system);
+  }
+}
+
+}  // namespace detail
+
 template <int D, class Shape>
 void g2p_motion(DiscreteSystem<D, Shape>& system) {
-  detail::g2p<D, Shape, true, false>(system);
+  detail::g2p_with_motion<D, Shape, false>(system);
 }
 
 template <int D, class Shape>
@@ -337,7 +410,7 @@ void g2p_stress(DiscreteSystem<D, Shape>& system) {
 // USL: both stages in one pass, N and dN at the start-of-step positions.
 template <int D, class Shape>
 void g2p_motion_and_stress(DiscreteSystem<D, Shape>& system) {
-  detail::g2p<D, Shape, true, true>(system);
+  detail::g2p_with_motion<D, Shape, true>(system);
 }
 
 }  // namespace flowmpm

@@ -104,12 +104,15 @@ void grid_velocity(DiscreteSystem<D, Shape>& system) {
 
 // A node too light for its stiffness: its own frequency sqrt(k_I / m_I),
 // k_I = sum_p V_p M_p |grad N_Ip|^2 (M the P-wave modulus), exceeds 1 / dt.
-// Only linear shape functions make such nodes, and only USL needs them
-// held (the grid keeps their stiffness only then): where a particle's weight
+// Only linear shape functions make such nodes, and only USL and APIC need
+// them held (the grid keeps their stiffness only then): where a particle's weight
 // N_Ip on a node vanishes, its gradient does not (at the material's moving
 // edge), and v_I + f_I dt / m_I would throw the stress update (USL) and the
 // positions off by (c dt / h)^2 / N_Ip times the strain in one step
-// (docs/STABILITY.md). Such a node hands the stress and position updates its
+// (docs/STABILITY.md); APIC's affine velocity sum_I v_I (x) dN_Ip would take
+// f_I dt / m_I whole (docs/theory/transfers.md; APIC's v_p and x_p take
+// p_I / m_I instead). Such a node hands the stress, position and affine
+// velocity updates its
 // start-of-step velocity, as USF and MUSL do at every node, while FLIP still
 // gives its particles the whole increment f_I dt / m_I (N_Ip f_I dt / m_I
 // is bounded), so that momentum is kept.

@@ -1,6 +1,8 @@
 // Particle-to-grid stages (docs/theory/step.md): p2g_momentum maps mass and momentum,
 // p2g_force the internal and body forces, to the nodes:
-//   m_I = sum_p N_Ip m_p,  p_I = sum_p N_Ip m_p v_p,
+//   m_I = sum_p N_Ip m_p,  p_I = sum_p N_Ip m_p v_p
+//   (APIC: p_I = sum_p N_Ip m_p (v_p + C_p (x_I - x_p)) [Jiang 2015],
+//   C_p = B_p D_p^-1 the particle's affine velocity; docs/theory/transfers.md),
 //   f_I = sum_p ( -V_p sigma_p . dN_Ip + N_Ip m_p g_p ),
 // g_p gravity plus the body force of the particle's body (loads, at the
 // start of the step), and with linear shape functions under USL the nodal stiffness
@@ -29,7 +31,8 @@ void set_accelerations(DiscreteSystem<D, Shape>& system) {
 // stencil per particle. Each node sums its particles in the same order
 // whichever is mapped, so the results do not depend on the grouping.
 // `Stiffness`: also the nodal stiffness of held_node (tasks/grid_update.hpp).
-template <int D, class Shape, bool Momentum, bool Force, bool Stiffness = false>
+// `Affine`: APIC's momentum, with the particles' affine velocities.
+template <int D, class Shape, bool Momentum, bool Force, bool Stiffness = false, bool Affine = false>
 void p2g(DiscreteSystem<D, Shape>& system) {
   auto& grid = system.grid;
   for (int k = 0; k < system.field_count(); ++k) {
@@ -70,6 +73,16 @@ void p2g(DiscreteSystem<D, Shape>& system) {
       const Stencil<D, Shape, Force> s(grid, b.x[p], b.half_width);
       const double m = b.mass[p];
       const Vec<D> mv = m * b.v[p], mg = m * g;
+      // APIC: N_Ip (x_I - x_p) on the same nodes, and m_p C_p.
+      using Offsets = Stencil<D, Shape, true, StencilFactor::offset>;
+      [[maybe_unused]] const auto offsets = [&] {
+        if constexpr (Affine) return Offsets(grid, b.x[p], b.half_width);
+        else return 0;
+      }();
+      [[maybe_unused]] double mC[D][D];
+      if constexpr (Affine)
+        for (int i = 0; i < D; ++i)
+          for (int j = 0; j < D; ++j) mC[i][j] = m * b.affine[p][D * i + j];
       double Vsigma[D][D];
       if constexpr (Force) {
         const Voigt& sigma = b.stress[p];
@@ -83,8 +96,14 @@ void p2g(DiscreteSystem<D, Shape>& system) {
         const NodePair N = w.N;
         if constexpr (Momentum) {
           store_nodes<Count>(to_mass + n, load_nodes<Count>(to_mass + n) + N * m);
-          for (int i = 0; i < D; ++i)
-            store_nodes<Count>(to_momentum[i] + n, load_nodes<Count>(to_momentum[i] + n) + N * mv[i]);
+          for (int i = 0; i < D; ++i) {
+            NodePair mom = N * mv[i];
+            if constexpr (Affine) {
+              const auto X = offsets.template pair_weights<Count>(line, k);
+              for (int j = 0; j < D; ++j) mom += mC[i][j] * X.dN[j];
+            }
+            store_nodes<Count>(to_momentum[i] + n, load_nodes<Count>(to_momentum[i] + n) + mom);
+          }
         }
         if constexpr (Force) {
           for (int i = 0; i < D; ++i) {
@@ -103,14 +122,27 @@ void p2g(DiscreteSystem<D, Shape>& system) {
   });
 }
 
+// The momentum pass, APIC's where the scene uses it.
+template <int D, class Shape, bool Force, bool Stiffness>
+void p2g_with_momentum(DiscreteSystem<D, Shape>& system) {
+  if (system.velocity_update == VelocityUpdate::apic) {
+    p2g<D, Shape, true, Force, Stiffness, true>(system);
+  } else {
+    p2g<D, Shape, true, Force, Stiffness>(system);
+  }
+}
+
 // The force pass, with the nodal stiffness where the grid keeps it (USL
 // with linear shape functions).
 template <int D, class Shape, bool Momentum>
 void p2g_with_force(DiscreteSystem<D, Shape>& system) {
-  if (Shape::gradient_jumps && !system.grid.stiffness.empty()) {  // every field has it then
-    p2g<D, Shape, Momentum, true, Shape::gradient_jumps>(system);
+  constexpr bool jumps = Shape::gradient_jumps;
+  if (jumps && !system.grid.stiffness.empty()) {  // every field has it then
+    if constexpr (Momentum) p2g_with_momentum<D, Shape, true, jumps>(system);
+    else p2g<D, Shape, false, true, jumps>(system);
   } else {
-    p2g<D, Shape, Momentum, true>(system);
+    if constexpr (Momentum) p2g_with_momentum<D, Shape, true, false>(system);
+    else p2g<D, Shape, false, true>(system);
   }
 }
 
@@ -118,7 +150,7 @@ void p2g_with_force(DiscreteSystem<D, Shape>& system) {
 
 template <int D, class Shape>
 void p2g_momentum(DiscreteSystem<D, Shape>& system) {
-  detail::p2g<D, Shape, true, false>(system);
+  detail::p2g_with_momentum<D, Shape, false, false>(system);
 }
 
 template <int D, class Shape>

@@ -77,7 +77,9 @@ inline StageAccess stage_access(Stage s) {
     case Stage::p2g_force: return {particle_motion | particle_volume | particle_stress, grid_force};
     case Stage::grid_velocity: return {grid_momentum, grid_velocity};
     case Stage::grid_integrate: return {grid_momentum | grid_force, grid_velocity | reaction_sums};
-    case Stage::g2p_motion: return {grid_velocity | particle_motion, particle_motion | step_sums};
+    // XPIC's projections (tasks/xpic.hpp) read the nodal mass and write
+    // nodal fields of their own, which no other stage touches.
+    case Stage::g2p_motion: return {grid_momentum | grid_velocity | particle_motion, particle_motion | step_sums};
     case Stage::g2p_stress:
       return {grid_velocity | particle_motion | particle_transport,
               particle_stress | particle_volume | particle_transport | step_sums};

@@ -354,6 +354,17 @@ TEST_CASE("linear shape functions: a reference's error sums, and reactions, carr
   CHECK(contains(csv, "error.stress"));
 }
 
+TEST_CASE("APIC: the affine velocity carries; XPIC carries nothing and continues the same") {
+  // The colliding blocks of configs/hard, checkpointed during the impact
+  // (step 100 of 200), MUSL (its remap maps with the affine velocity too).
+  TempDir apic("flowmpm_restart"), xpic("flowmpm_restart");
+  check_restart_matches(apic, config_file("hard/impact_2d.toml"), 100,
+                        {"analysis.velocity_update=\"apic\"", "analysis.scheme=\"musl\"",
+                         "analysis.shape_function=\"bspline2\""});
+  CHECK(!checkpoint_column<std::array<double, 4>>(apic.path / "restarted", "batch.0.affine_velocity").empty());
+  check_restart_matches(xpic, config_file("hard/impact_2d.toml"), 100, {"analysis.velocity_update=\"xpic\""});
+}
+
 TEST_CASE("von_mises plate with loaded node sets: reactions and plastic strain carry") {
   TempDir dir("flowmpm_restart");
   check_restart_matches(dir, config_file("materials/von_mises_plate.toml"), 2600,

@@ -90,6 +90,20 @@ TEST_CASE("a sweep expands [vary] keys in file order, then each [[zip]], the las
   CHECK(s.cases[23].c.output.every == 5);
 }
 
+TEST_CASE("the shipped speed-against-error sweeps run FLIP, APIC and XPIC(5) for every method and resolution") {
+  for (auto [name, cases] : {std::pair{"bar_speed_vs_error.toml", 3 * 4 * 3 * 5}, std::pair{"column_speed_vs_error.toml", 3 * 4 * 4}}) {
+    CAPTURE(name);
+    const flowmpm::Sweep s = flowmpm::read_sweep(fs::path(FLOWMPM_SOURCE_DIR) / "configs/sweeps" / name);
+    REQUIRE(s.cases.size() == static_cast<std::size_t>(cases));
+    CHECK(s.keys.front() == "analysis.velocity_update");
+    using flowmpm::VelocityUpdate;
+    CHECK(s.cases.front().c.system.velocity_update == VelocityUpdate::flip);
+    CHECK(s.cases[cases / 3].c.system.velocity_update == VelocityUpdate::apic);
+    CHECK(s.cases.back().c.system.velocity_update == VelocityUpdate::xpic);
+    CHECK(s.cases.back().c.system.xpic_order == 5);
+  }
+}
+
 TEST_CASE("a sweep without [vary] or [[zip]] is the base case alone, with the default output") {
   SweepDir dir;
   write_text(dir.path / "alone.toml", "base = \"base.toml\"\n");

@@ -53,6 +53,9 @@ struct ParticleBatch {
   std::vector<double> mass, volume;        // kg, m^3
   std::vector<Voigt> stress, strain;       // Pa, -
   std::vector<std::uint32_t> id;           // made in this order at set-up: the output row
+  // Only with APIC (tasks/p2g.hpp, g2p.hpp): the affine velocity
+  // C_p = B_p D_p^-1, row by row (1/s; docs/theory/transfers.md).
+  std::vector<std::array<double, D * D>> affine;
   MaterialStates states;                   // the model's internal variables
   // Only when the scene conducts heat: T (K) and its change over the last
   // transport step; only when it diffuses solvent: c (weight fraction) and
@@ -99,6 +102,7 @@ struct ParticleBatch {
     f("stress", self.stress);
     f("strain", self.strain);
     f("id", self.id);
+    f("affine_velocity", self.affine);
     f("temperature", self.temperature);
     f("temperature_step", self.temperature_step);
     f("concentration", self.concentration);

@@ -21,7 +21,17 @@
 
 namespace flowmpm {
 
-template <int D, class Shape, bool WithGradient = true>
+// What a stencil's second factor (PairWeights::dN, gradient()) holds:
+//   gradient: dN_Ip (1/m);
+//   offset:   N_Ip (x_I - x_p) (m), for APIC's p2g;
+//   affine:   APIC's G_Ip, C_p = sum_I v_I (x) G_Ip (1/m): D_p^-1 (x_I - x_p) N_Ip
+//             with D_p = apic_inertia h^2 where the shape function has one
+//             (B-splines), dN_Ip where it has none (linear, GIMP)
+//             (docs/theory/transfers.md).
+// Each is the tensor product of 1D factors, as the gradient is.
+enum class StencilFactor { gradient, offset, affine };
+
+template <int D, class Shape, bool WithGradient = true, StencilFactor Factor = StencilFactor::gradient>
 struct Stencil {
   static constexpr int support = Shape::support;
   static constexpr int size = D == 1 ? support : D == 2 ? support * support : support * support * support;
@@ -36,7 +46,14 @@ struct Stencil {
     double w[D][support], dw[D][support];
     Index<D> base;
     for (int d = 0; d < D; ++d) {
-      Shape::stencil(grid.coordinate(x, d), grid.inv_h[d], half_width[d], base[d], w[d], dw[d]);
+      const double g = grid.coordinate(x, d);
+      Shape::stencil(g, grid.inv_h[d], half_width[d], base[d], w[d], dw[d]);
+      if constexpr (Factor == StencilFactor::offset ||
+                    (Factor == StencilFactor::affine && Shape::apic_inertia > 0.0)) {
+        // (x_I - x_p)_d = (base + k - g) h_d; over D_p = apic_inertia h_d^2.
+        const double scale = Factor == StencilFactor::offset ? grid.h[d] : grid.inv_h[d] / Shape::apic_inertia;
+        for (int k = 0; k < support; ++k) dw[d][k] = w[d][k] * ((base[d] + k - g) * scale);
+      }
     }
     for (int k = 0; k < support; ++k) {
       w_x[k] = w[0][k];

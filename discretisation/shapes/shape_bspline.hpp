@@ -18,6 +18,9 @@ struct QuadraticBSpline {
   static constexpr int reach_below = 1;  // nodes c - 1 ... c + 2, three of them
   static constexpr int reach_above = 2;
   static constexpr bool gradient_jumps = false;  // |dN|^2 / N bounded
+  // APIC: D_p = sum_I N_Ip (x_I - x_p)(x_I - x_p)^T = h^2 / 4 I wherever the
+  // particle is [Jiang 2015] (docs/theory/transfers.md).
+  static constexpr double apic_inertia = 0.25;
   // Stable time step in h / c, 1 to 4 particles per cell (docs/STABILITY.md):
   // USL at a free surface; USF and MUSL as measured on the 2D column, lower
   // than the 2.3 of the bar (not explained).
@@ -44,6 +47,7 @@ struct CubicBSpline {
   static constexpr int reach_below = 1;  // nodes c - 1 ... c + 2
   static constexpr int reach_above = 2;
   static constexpr bool gradient_jumps = false;  // |dN|^2 / N bounded
+  static constexpr double apic_inertia = 1.0 / 3.0;  // APIC: D_p = h^2 / 3 I
   // Stable time step in h / c, 1 to 4 particles per cell (docs/STABILITY.md).
   static constexpr std::array<double, 4> stable_factor_usl{1.02, 1.09, 1.11, 1.11};
   static constexpr std::array<double, 4> stable_factor_remapped{0.90, 0.90, 0.90, 0.90};

@@ -3,6 +3,9 @@
 //   static constexpr int support;          // nodes per axis of its 1D stencil
 //   static constexpr int reach_below, reach_above;  // nodes c - below ... c + above of cell c
 //   static constexpr bool gradient_jumps;  // the gradient stays finite where N vanishes (linear)
+//   static constexpr double apic_inertia;  // APIC's D_p in h^2 where it is the same for every
+//                                          // particle (B-splines), 0 where it is not (linear, GIMP:
+//                                          // APIC takes the velocity gradient there)
 //   static constexpr std::array<double, 4> stable_factor_usl, stable_factor_remapped;
 //                                          // largest stable dt in h / c, 1 to 4 particles per cell
 //   static void stencil(double g, double inv_h, double half_width, int& base,

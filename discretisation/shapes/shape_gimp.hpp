@@ -23,6 +23,9 @@ struct GimpShape {
   static constexpr int reach_below = 1;
   static constexpr int reach_above = 2;
   static constexpr bool gradient_jumps = false;  // |dN|^2 / N bounded
+  // APIC: D_p depends on where the particle is; C_p = sum v_I (x) grad N_Ip
+  // instead (docs/theory/transfers.md).
+  static constexpr double apic_inertia = 0.0;
   // Stable time step in h / c, 1 to 4 particles per cell (docs/STABILITY.md):
   // USL at a free surface, where |dN|^2 / N = 2 ppc / h^2; USF and MUSL.
   static constexpr std::array<double, 4> stable_factor_usl{0.67, 0.63, 0.55, 0.49};

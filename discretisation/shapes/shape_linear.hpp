@@ -22,6 +22,9 @@ struct LinearShape {
   // face): the grid update watches the nodes this makes too light for their
   // stiffness (tasks/grid_update.hpp held_node).
   static constexpr bool gradient_jumps = true;
+  // APIC: grad N_Ip = D_p^-1 (x_I - x_p) N_Ip exactly, D_p singular on a node:
+  // C_p = sum v_I (x) grad N_Ip [Jiang 2015] (docs/theory/transfers.md).
+  static constexpr double apic_inertia = 0.0;
   // The largest stable time step, in h / c, for 1 to 4 particles per cell
   // and axis (docs/STABILITY.md): with the stress from the updated grid
   // velocity (USL; the lattice allows 0.71-0.77, but at a moving free

@@ -97,24 +97,28 @@ MemoryEstimate estimate_memory(const Case& c) {
   with_dimension_and_shape(s.dimension, s.shape_function, [&]<int D, class Shape>() {
     const double vec = sizeof(Vec<D>);
     // ParticleBatch's columns (discretisation/grid/particles.hpp): x, v, x0 when
-    // kept, mass, volume, stress, strain, id and the model's state.
+    // kept, mass, volume, stress, strain, id, APIC's affine velocity and the
+    // model's state.
+    const double affine = s.velocity_update == VelocityUpdate::apic ? D * D * sizeof(double) : 0.0;
     double columns = 2 * vec + (s.keep_initial_positions ? vec : 0.0) + 2 * sizeof(double) + 2 * sizeof(Voigt) +
-                     sizeof(std::uint32_t) + static_cast<double>(largest_state);
+                     sizeof(std::uint32_t) + affine + static_cast<double>(largest_state);
     // Transient: x grows by push_back at set-up (up to twice its size), and
     // a sort holds a key, an order and one permuted column.
     const double transient = std::max(vec, 8.0 + std::max<double>(sizeof(Voigt), static_cast<double>(largest_state)));
     e.bytes_per_particle = columns + transient + snapshot * (c.guard_every > 0 ? 2.0 : 1.0);
 
     // Grid<D>: mass, momentum, force, velocity, velocity change; the
-    // stiffness where the gradient jumps. The sort counts particles per
-    // cell of the block-padded grid (two 32-bit arrays).
+    // stiffness where the gradient jumps; XPIC's nodes (mass, momentum,
+    // iterate, correction). The sort counts particles per cell of the
+    // block-padded grid (two 32-bit arrays).
     e.nodes = e.padded_cells = 1.0;
     for (int d = 0; d < D; ++d) {
       const int B = BlockLayout<D, Shape>::block_cells;
       e.nodes *= s.grid.cells[d] + 1.0;
       e.padded_cells *= std::ceil(static_cast<double>(s.grid.cells[d]) / B) * B;
     }
-    e.bytes_per_node = sizeof(double) * (1.0 + 4.0 * D + (Shape::gradient_jumps ? 1.0 : 0.0)) +
+    const double xpic = s.velocity_update == VelocityUpdate::xpic ? 1.0 + 3.0 * D : 0.0;
+    e.bytes_per_node = sizeof(double) * (1.0 + 4.0 * D + (Shape::gradient_jumps ? 1.0 : 0.0) + xpic) +
                        2.0 * sizeof(std::uint32_t) * e.padded_cells / e.nodes;
   });
   e.particle_bytes = e.particles * e.bytes_per_particle;

@@ -25,10 +25,19 @@ void read_analysis(TableReader t, Case& c) {
     t.require(s.dimension == 2, "stress_state", "no stress_state outside 2D (3D is full, 1D uniaxial stress)");
     s.plane_stress = t.choice("stress_state", {"plane_strain", "plane_stress"}) == "plane_stress";
   }
-  const std::string update = t.choice("velocity_update", {"flip", "pic", "blend"}, "flip");
-  s.velocity_update = update == "blend" ? VelocityUpdate::blend
-                      : update == "pic" ? VelocityUpdate::pic
-                                        : VelocityUpdate::flip;
+  const std::string update = t.choice("velocity_update", {"flip", "pic", "blend", "apic", "xpic"}, "flip");
+  for (VelocityUpdate u : {VelocityUpdate::flip, VelocityUpdate::pic, VelocityUpdate::blend, VelocityUpdate::apic,
+                           VelocityUpdate::xpic})
+    if (update == velocity_update_name(u)) s.velocity_update = u;
+  if (s.velocity_update == VelocityUpdate::xpic) {
+    if (t.has("xpic_order")) {
+      const std::int64_t order = t.integer("xpic_order");
+      t.require(order >= 1 && order <= 20, "xpic_order", "an XPIC order m from 1 (PIC) to 20");
+      s.xpic_order = static_cast<int>(order);
+    }
+  } else if (t.has("xpic_order")) {
+    t.fail("xpic_order", "no xpic_order unless velocity_update = \"xpic\"");
+  }
   if (s.velocity_update == VelocityUpdate::blend) {
     s.flip_fraction = t.number("flip_fraction");
     t.require(s.flip_fraction >= 0.0 && s.flip_fraction <= 1.0, "flip_fraction",

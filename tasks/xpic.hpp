@@ -1,0 +1,110 @@
+// XPIC(m) [Hammerquist 2017] (docs/theory/transfers.md):
+// the particles' new velocity is
+//   v_p^(n+1) = sum_I N_Ip (v_I^L+ - w_I),  w = v^L - v*,
+//   v* = sum_{k=1..m} (-1)^(k+1) C(m, k) Q^(k-1) v^L,
+// v^L = M^-1 S V^n the lumped nodal velocity of the particles' velocities
+// at the start of the step, v^L+ the grid's velocity after grid_integrate,
+// and Q the grid-particle-grid projection
+//   (Q u)_I = (1 / m_I) sum_p N_Ip m_p sum_J N_Jp u_J.
+// Then S^T v* = (I - (I - P)^m) V^n, P = S^T M^-1 S the particle-grid-
+// particle projection: XPIC(1) is PIC, and as m grows the update keeps all
+// of V^n but its part in the null space of P (FLIP's noise). Every u_k
+// takes the velocity constraints at t (a prescribed node keeps its value in
+// every u_k, so v* = v^L there: the coefficients sum to 1). Summed here as
+//   w = sum_k a_k u_k,  u_k = Q^(k-1) v^L,  a_1 = 1 - m,  a_k = (-1)^k C(m, k),
+// so that w = 0 exactly for m = 1 and XPIC(1) is PIC bit for bit.
+// Computed at the start of g2p_motion, while the particles are still at
+// x^n: m passes over the particles (v^L mapped again, then a gather and a
+// scatter per projection), in p2g's colour order (deterministic), each
+// contact field on its own; contact acts on v^L+ only.
+#pragma once
+#include "tasks/grid_update.hpp"
+#include "tasks/parallel_blocks.hpp"
+
+namespace flowmpm {
+
+namespace detail {
+
+// The iterate's momentum sum_p N_Ip m_p v_p: with the particles' velocities
+// (First) or with v_p = sum_J N_Jp u_J, u the last iterate.
+template <int D, class Shape, bool First>
+void xpic_map(DiscreteSystem<D, Shape>& system) {
+  for (XpicNodes<D>& x : system.xpic) {
+    for_each_active_node(system.grid, [&](std::size_t n, const Index<D>&) {
+      for (int d = 0; d < D; ++d) x.iterate.momentum[d][n] = 0.0;
+    });
+  }
+  const auto& grid = system.grid;
+  scatter_by_colour(system, [&](ParticleBatch<D>& b, std::uint32_t first, std::uint32_t last, std::uint32_t) {
+    if (system.is_rigid(b)) return;
+    NodalField<D>& iterate = system.xpic[b.field].iterate;
+    double* to_momentum[D];
+    const double* u[D];
+    for (int d = 0; d < D; ++d) {
+      to_momentum[d] = iterate.momentum[d].data();
+      u[d] = iterate.velocity[d].data();
+    }
+    for (std::uint32_t p = first; p < last; ++p) {
+      const Stencil<D, Shape, false> s(grid, b.x[p], b.half_width);
+      Vec<D> v;
+      if constexpr (First) {
+        v = b.v[p];
+      } else {
+        NodePair v_sum[D] = {};
+        s.for_each_node_pair([&]<int Count>(int line, int k, std::size_t n) {
+          const NodePair N = s.template pair_weights<Count>(line, k).N;
+          for (int i = 0; i < D; ++i) v_sum[i] += N * load_nodes<Count>(u[i] + n);
+        });
+        for (int i = 0; i < D; ++i) v[i] = sum(v_sum[i]);
+      }
+      const Vec<D> mv = b.mass[p] * v;
+      s.for_each_node_pair([&]<int Count>(int line, int k, std::size_t n) {
+        const NodePair N = s.template pair_weights<Count>(line, k).N;
+        for (int i = 0; i < D; ++i)
+          store_nodes<Count>(to_momentum[i] + n, load_nodes<Count>(to_momentum[i] + n) + N * mv[i]);
+      });
+    }
+  });
+}
+
+// u_k = momentum / m_I (0 on an empty node) with the constraints at t, as
+// grid_velocity; then w = a u_k (First) or w += a u_k.
+template <int D, class Shape, bool First>
+void xpic_iterate(DiscreteSystem<D, Shape>& system, double a) {
+  for (int k = 0; k < system.field_count(); ++k) {
+    const NodalField<D>& field = system.field(k);
+    XpicNodes<D>& x = system.xpic[k];
+    NodalField<D>& iterate = x.iterate;
+    fold_mirror_planes(system, iterate, iterate.momentum, false);  // the mass is folded already
+    for_each_active_node(system.grid, [&](std::size_t n, const Index<D>&) {
+      if constexpr (First) iterate.mass[n] = field.mass[n];
+      const double m = iterate.mass[n];
+      for (int d = 0; d < D; ++d) iterate.velocity[d][n] = m > 0.0 ? iterate.momentum[d][n] / m : 0.0;
+    });
+    apply_velocity_constraints(system, iterate, system.t);
+    for_each_active_node(system.grid, [&](std::size_t n, const Index<D>&) {
+      for (int d = 0; d < D; ++d) {
+        const double u = iterate.velocity[d][n];
+        x.correction[d][n] = First ? a * u : x.correction[d][n] + a * u;
+      }
+    });
+  }
+}
+
+}  // namespace detail
+
+// w on every velocity field's XpicNodes.
+template <int D, class Shape>
+void xpic_correction(DiscreteSystem<D, Shape>& system) {
+  const int m = system.xpic_order;
+  detail::xpic_map<D, Shape, true>(system);
+  detail::xpic_iterate<D, Shape, true>(system, 1.0 - m);
+  double binomial = m;  // C(m, k - 1)
+  for (int k = 2; k <= m; ++k) {
+    binomial = binomial * (m - k + 1) / k;
+    detail::xpic_map<D, Shape, false>(system);
+    detail::xpic_iterate<D, Shape, false>(system, k % 2 == 0 ? binomial : -binomial);
+  }
+}
+
+}  // namespace flowmpm
