@@ -3,7 +3,9 @@
 //             (a = 1 FLIP, a = 0 PIC), x_p <- x_p + dt sum_I N_Ip v_I,
 //             with v_I the velocity after grid_integrate.
 // g2p_stress: L_p = sum_I v_I (x) dN_Ip, d eps = sym(L_p) dt, the material
-//             update sigma(d eps), eps += d eps, V_p *= 1 + tr(d eps); a
+//             update sigma(d eps), eps += d eps, V_p *= 1 + tr(d eps)
+//             (axisymmetric: d eps_tt = v_r / r_p dt, v_r = sum_I N_Ip v_I,r,
+//             in the zz slot, [Sulsky 1996]); a
 //             model asking for nonlocal averages gets them and keeps its
 //             start of step (tasks/nonlocal_settle.hpp).
 // The material update sees the particle's own temperature and
@@ -36,27 +38,30 @@ struct TransportedInput {
   double reference_temperature = 0.0;  // K
 };
 
-// The material update of particle p for its velocity gradient L
-// (g2p_stress). Returns the work done on it by its expansion strains over
+// The material update of particle p for its velocity gradient L and, in
+// axisymmetric, its hoop rate v_r / r (0 otherwise) (g2p_stress). Returns the work done on it by its expansion strains over
 // the step (J), -V sigma_mid : d eps_expansion, with `ExpansionWork`.
 // Nonlocal: the model asks for nonlocal averages; the update gets them,
 // and the particle's start of step is kept for tasks/nonlocal_settle.hpp
 // to redo the update.
 template <int D, class Shape, StressState Kind, bool ExpansionWork, class MaterialModel, bool Nonlocal = false>
 [[gnu::always_inline]] inline double update_particle_stress(DiscreteSystem<D, Shape>& system, ParticleBatch<D>& b, std::size_t p,
-                                                         const double (&L)[D][D], const MaterialModel& material,
+                                                         const double (&L)[D][D], double hoop,
+                                                         const MaterialModel& material,
                                                          typename MaterialModel::State& state,
                                                          const TransportedInput& transported) {
   const double dt = system.dt;
   Voigt deps{};
   for (int i = 0; i < D; ++i)
     for (int j = i; j < D; ++j) deps[voigt_slot(i, j)] = 0.5 * (L[i][j] + L[j][i]) * dt;
+  if constexpr (Kind == StressState::axisymmetric) deps[2] = hoop * dt;
   MaterialInput input;
   input.t = system.t + dt;
   input.dt = dt;
   input.length = b.particle_length;
   for (int i = 0; i < D; ++i)
     for (int j = 0; j < D; ++j) input.dL(i, j) = L[i][j] * dt;
+  if constexpr (Kind == StressState::axisymmetric) input.dL(2, 2) = hoop * dt;
   if (transported.temperature) {
     input.temperature_change = transported.temperature[p] - transported.reference_temperature;
     input.temperature_step = transported.temperature_step[p];
@@ -77,6 +82,7 @@ template <int D, class Shape, StressState Kind, bool ExpansionWork, class Materi
     kept.volume[p] = b.volume[p];
     for (int i = 0; i < D; ++i)
       for (int j = 0; j < D; ++j) kept.L[p][D * i + j] = L[i][j];
+    kept.L[p][D * D] = hoop;
   }
   double expansion_work = 0.0;
   if constexpr (ExpansionWork) {
@@ -97,7 +103,7 @@ template <int D, class Shape, StressState Kind, bool ExpansionWork, class Materi
   return expansion_work;
 }
 
-// Calls f(update) with update(p, L) the material update of `b`'s particles:
+// Calls f(update) with update(p, L, hoop) the material update of `b`'s particles:
 // one dispatch on the material, the stress state and whether the batch asks
 // for nonlocal averages per call, none per particle.
 template <int D, class Shape, class F>
@@ -122,8 +128,8 @@ void with_stress_update(DiscreteSystem<D, Shape>& system, ParticleBatch<D>& b, F
           if constexpr (NonlocalModel<M>) {
             if (!b.nonlocal_others.empty()) {
               // A nonlocal model has no expansion strains: no expansion work.
-              f([&](std::size_t p, const double(&L)[D][D]) {
-                return update_particle_stress<D, Shape, Kind, false, M, true>(system, b, p, L, material, states[p],
+              f([&](std::size_t p, const double(&L)[D][D], double hoop) {
+                return update_particle_stress<D, Shape, Kind, false, M, true>(system, b, p, L, hoop, material, states[p],
                                                                              transported);
               });
               return;
@@ -131,8 +137,8 @@ void with_stress_update(DiscreteSystem<D, Shape>& system, ParticleBatch<D>& b, F
           }
           typename M::State no_state{};
           auto with_work = [&]<bool Work>() {
-            f([&](std::size_t p, const double(&L)[D][D]) {
-              return update_particle_stress<D, Shape, Kind, Work>(system, b, p, L, material,
+            f([&](std::size_t p, const double(&L)[D][D], double hoop) {
+              return update_particle_stress<D, Shape, Kind, Work>(system, b, p, L, hoop, material,
                                                                   states.empty() ? no_state : states[p], transported);
             });
           };
@@ -157,6 +163,8 @@ void with_stress_update(DiscreteSystem<D, Shape>& system, ParticleBatch<D>& b, F
           for_state.template operator()<StressState::uniaxial_stress>();
         } else if (system.stress_state == StressState::plane_stress) {
           for_state.template operator()<StressState::plane_stress>();
+        } else if (system.stress_state == StressState::axisymmetric) {
+          for_state.template operator()<StressState::axisymmetric>();
         } else {
           for_state.template operator()<StressState::plane_strain>();
         }
@@ -202,7 +210,8 @@ template <int D, class Shape>
 
 // One pass over the particles: g2p_motion, g2p_stress, or both (USL), from
 // one stencil per particle at its position at the start of the pass.
-template <int D, class Shape, bool Motion, bool Stress>
+// `Hoop`: axisymmetric (the hoop rate, and no particle onto the axis).
+template <int D, class Shape, bool Motion, bool Stress, bool Hoop>
 void g2p(DiscreteSystem<D, Shape>& system) {
   using Layout = BlockLayout<D, Shape>;
   const auto& grid = system.grid;
@@ -254,6 +263,8 @@ void g2p(DiscreteSystem<D, Shape>& system) {
             if constexpr (Motion) {
               v_sum[i] += N * v;
               dv_sum[i] += N * load_nodes<Count>(velocity_change[i] + n);
+            } else if constexpr (Hoop) {
+              if (i == 0) v_sum[0] += N * v;
             }
             if constexpr (Stress)
               for (int j = 0; j < D; ++j) L_sum[i][j] += v * w.dN[j];
@@ -266,7 +277,9 @@ void g2p(DiscreteSystem<D, Shape>& system) {
           dv[i] = sum(dv_sum[i]);
           for (int j = 0; j < D; ++j) L[i][j] = sum(L_sum[i][j]);
         }
-        if constexpr (Stress) energy.expansion_work += update_stress(p, L);
+        [[maybe_unused]] double hoop = 0.0;  // v_r / r
+        if constexpr (Hoop && Stress) hoop = v_grid[0] / b.x[p][0];
+        if constexpr (Stress) energy.expansion_work += update_stress(p, L, hoop);
         if constexpr (Motion) {
           const Vec<D> x_new = b.x[p] + dt * v_grid;
           // A particle must stay where its stencil has nodes and may cross at
@@ -287,12 +300,14 @@ void g2p(DiscreteSystem<D, Shape>& system) {
               stays = stays && c_new[d] >= stay_lo[d] && c_new[d] <= stay_hi[d];
             }
           }
+          if constexpr (Hoop) inside = inside && x_new[0] > 0.0;  // r > 0: off the axis
           const Vec<D> v_new = a * (b.v[p] + dv) + (1.0 - a) * v_grid;
           if (!inside || !one_cell || !v_new.allFinite()) {
             system.flags.fail("a particle at " + position_text<D>(b.x[p]) + " would move to " +
                              position_text<D>(x_new) +
-                             (!v_new.allFinite() ? ", its velocity not finite"
-                              : !inside          ? ", outside the grid"
+                             (!v_new.allFinite()          ? ", its velocity not finite"
+                              : Hoop && !(x_new[0] > 0.0) ? ", onto or across the axis (r <= 0)"
+                              : !inside                   ? ", outside the grid"
                                                  : ", more than one cell in one step"));
             continue;
           }
@@ -308,7 +323,7 @@ void g2p(DiscreteSystem<D, Shape>& system) {
     if constexpr (Stress) {
       with_stress_update(system, b, particles);
     } else {
-      particles([](std::size_t, const double(&)[D][D]) { return 0.0; });
+      particles([](std::size_t, const double(&)[D][D], double) { return 0.0; });
     }
     // Only this task touches the block: its segments add up in batch order.
     BlockEnergy& sums = system.block_energy[block];
@@ -324,20 +339,36 @@ void g2p(DiscreteSystem<D, Shape>& system) {
 
 }  // namespace detail
 
+namespace detail {
+
+// g2p with the hoop rate where the analysis is axisymmetric.
+template <int D, class Shape, bool Motion, bool Stress>
+void g2p_of_state(DiscreteSystem<D, Shape>& system) {
+  if constexpr (D == 2) {
+    if (system.stress_state == StressState::axisymmetric) {
+      g2p<D, Shape, Motion, Stress, true>(system);
+      return;
+    }
+  }
+  g2p<D, Shape, Motion, Stress, false>(system);
+}
+
+}  // namespace detail
+
 template <int D, class Shape>
 void g2p_motion(DiscreteSystem<D, Shape>& system) {
-  detail::g2p<D, Shape, true, false>(system);
+  detail::g2p_of_state<D, Shape, true, false>(system);
 }
 
 template <int D, class Shape>
 void g2p_stress(DiscreteSystem<D, Shape>& system) {
-  detail::g2p<D, Shape, false, true>(system);
+  detail::g2p_of_state<D, Shape, false, true>(system);
 }
 
 // USL: both stages in one pass, N and dN at the start-of-step positions.
 template <int D, class Shape>
 void g2p_motion_and_stress(DiscreteSystem<D, Shape>& system) {
-  detail::g2p<D, Shape, true, true>(system);
+  detail::g2p_of_state<D, Shape, true, true>(system);
 }
 
 }  // namespace flowmpm
