@@ -22,6 +22,7 @@
 #include <Eigen/Geometry>
 
 #include "core/errors.hpp"
+#include "core/number_text.hpp"
 #include "discretisation/bodies/body_overlap.hpp"
 #include "discretisation/nonlocal/nonlocal_average.hpp"
 #include "discretisation/grid/particle_sort.hpp"
@@ -170,6 +171,7 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
   system.velocity_update = spec.velocity_update;
   system.xpic_order = spec.xpic_order;
   if (D == 2 && spec.plane_stress) system.stress_state = StressState::plane_stress;
+  if (D == 2 && spec.axisymmetric) system.stress_state = StressState::axisymmetric;
   system.dt = spec.dt;
   if (spec.conducts_heat()) system.heat.emplace();
   if (spec.diffuses_solvent()) system.solvent.emplace();
@@ -212,11 +214,23 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
       if (f.body == static_cast<int>(bi)) batch.surface_flux[2 * f.axis + (f.side > 0)] = static_cast<int>(k);
     }
     const bool has_fluxes = std::ranges::any_of(batch.surface_flux, [](int k) { return k >= 0; });
+    // Volumes: per unit thickness in 2D; axisymmetric, per radian, V = r A
+    // (the area A of the section times the radius).
+    std::vector<double> volume = list.volume;
+    if (spec.axisymmetric) {
+      for (std::size_t p = 0; p < n; ++p) {
+        if (!(list.position[p][0] > 0.0)) {
+          throw CaseError(body.where + ": a particle at r = " + readable_text(list.position[p][0]) +
+                          ": expected the body at r > 0 (axisymmetric: x is the radius)");
+        }
+        volume[p] *= list.position[p][0];
+      }
+    }
     batch.x.resize(n);
     batch.mass.resize(n);
     for (std::size_t p = 0; p < n; ++p) {
       for (int d = 0; d < D; ++d) batch.x[p][d] = list.position[p][d];
-      batch.mass[p] = rho * list.volume[p];
+      batch.mass[p] = rho * volume[p];
     }
     // The particles on a face with a surface flux: the body's surface faces
     // with that normal (the first or last lattice layer of a box).
@@ -246,7 +260,7 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
       batch.affine.assign(n, C);
     }
     if (spec.keep_initial_positions) batch.x0 = batch.x;
-    batch.volume = list.volume;
+    batch.volume = volume;
     double top = 0.0;
     if (body.initial_stress) {
       if (const auto* g = std::get_if<GeostaticStress>(&*body.initial_stress)) top = detail::body_top(body, list, g->vertical, D);
@@ -260,7 +274,7 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
       // update: T - T_ref (materials/expansion.hpp).
       const auto& reference = transport(system.materials[body.material]).reference_temperature;
       batch.temperature_step.assign(n, reference ? body.temperature - *reference : 0.0);
-      for (const double v : list.volume)
+      for (const double v : volume)
         least_heat_capacity = std::min(least_heat_capacity, rho * v * transport(system.materials[body.material]).heat_capacity);
     }
     if (system.solvent) {
@@ -306,7 +320,7 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
                       spec.materials[body.material].name + "\"): " + e.what());
     }
     if (!body.rigid())
-      for (const double v : list.volume) lightest = std::min(lightest, rho * v);
+      for (const double m : batch.mass) lightest = std::min(lightest, m);
     system.batches.push_back(std::move(batch));
   }
   if (!spec.contacts.empty()) build_contact(spec, system);

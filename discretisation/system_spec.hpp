@@ -119,6 +119,9 @@ struct SystemSpec {
   std::string source;  // where it was read from (the case file), for messages
   int dimension = 3;
   bool plane_stress = false;              // 2D: plane stress instead of plane strain
+  // 2D: axisymmetric about the y axis (x the radius r >= 0, y the axial z);
+  // volumes, masses, forces and energies per radian.
+  bool axisymmetric = false;
   ShapeChoice shape_function;             // the shape function (discretisation/shapes/shape_functions.hpp)
   VelocityUpdate velocity_update = VelocityUpdate::flip;
   double flip_fraction = 1.0;             // 1: FLIP, 0: PIC

@@ -53,6 +53,14 @@ inline std::vector<std::string> default_output_fields() {
 // Voigt slot of tensor output component k (xx, yy, zz, xy, yz, xz).
 inline constexpr std::array<int, 6> tensor_output_order = {0, 1, 2, 5, 3, 4};
 inline constexpr const char* tensor_output_components = "xx yy zz xy yz xz";
+// The same names for a stress state (stress_state_name): axisymmetric, x is
+// the radius r, y the axial z and z the hoop direction theta.
+inline const char* tensor_output_components_of(std::string_view stress_state) {
+  return stress_state == "axisymmetric" ? "rr zz tt rz zt rt" : tensor_output_components;
+}
+inline const char* vector_output_components_of(std::string_view stress_state) {
+  return stress_state == "axisymmetric" ? "r z (theta, 0)" : "x y z (padded with 0 below 3D)";
+}
 
 struct SnapshotField {
   OutputField field;

@@ -70,8 +70,10 @@ void add_external_forces(DiscreteSystem<D, Shape>& system) {
                           ") left the nodes near the material");
         continue;
       }
-      Vec<D> force = face.area * traction;
-      force[face.axis] -= pressure * face.area * face.sign;
+      // Axisymmetric: per radian, the face's area times its radius.
+      const double area = system.stress_state == StressState::axisymmetric ? face.area * x[0] : face.area;
+      Vec<D> force = area * traction;
+      force[face.axis] -= pressure * area * face.sign;
       // The face's force goes to the nodes of its stencil that carry the
       // body, in proportion to N there. A node lighter than a millionth of
       // the face's particle carries none of it: it sees only the far tail

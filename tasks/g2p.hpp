@@ -7,7 +7,9 @@
 //             XPIC(m): v_p <- sum_I N_Ip (v_I - w_I) (tasks/xpic.hpp);
 //             docs/theory/transfers.md.
 // g2p_stress: L_p = sum_I v_I (x) dN_Ip, d eps = sym(L_p) dt, the material
-//             update sigma(d eps), eps += d eps, V_p *= 1 + tr(d eps); a
+//             update sigma(d eps), eps += d eps, V_p *= 1 + tr(d eps)
+//             (axisymmetric: d eps_tt = v_r / r_p dt, v_r = sum_I N_Ip v_I,r,
+//             in the zz slot, [Sulsky 1996]); a
 //             model asking for nonlocal averages gets them and keeps its
 //             start of step (tasks/nonlocal_settle.hpp).
 // The material update sees the particle's own temperature and
@@ -41,27 +43,30 @@ struct TransportedInput {
   double reference_temperature = 0.0;  // K
 };
 
-// The material update of particle p for its velocity gradient L
-// (g2p_stress). Returns the work done on it by its expansion strains over
+// The material update of particle p for its velocity gradient L and, in
+// axisymmetric, its hoop rate v_r / r (0 otherwise) (g2p_stress). Returns the work done on it by its expansion strains over
 // the step (J), -V sigma_mid : d eps_expansion, with `ExpansionWork`.
 // Nonlocal: the model asks for nonlocal averages; the update gets them,
 // and the particle's start of step is kept for tasks/nonlocal_settle.hpp
 // to redo the update.
 template <int D, class Shape, StressState Kind, bool ExpansionWork, class MaterialModel, bool Nonlocal = false>
 [[gnu::always_inline]] inline double update_particle_stress(DiscreteSystem<D, Shape>& system, ParticleBatch<D>& b, std::size_t p,
-                                                         const double (&L)[D][D], const MaterialModel& material,
+                                                         const double (&L)[D][D], double hoop,
+                                                         const MaterialModel& material,
                                                          typename MaterialModel::State& state,
                                                          const TransportedInput& transported) {
   const double dt = system.dt;
   Voigt deps{};
   for (int i = 0; i < D; ++i)
     for (int j = i; j < D; ++j) deps[voigt_slot(i, j)] = 0.5 * (L[i][j] + L[j][i]) * dt;
+  if constexpr (Kind == StressState::axisymmetric) deps[2] = hoop * dt;
   MaterialInput input;
   input.t = system.t + dt;
   input.dt = dt;
   input.length = b.particle_length;
   for (int i = 0; i < D; ++i)
     for (int j = 0; j < D; ++j) input.dL(i, j) = L[i][j] * dt;
+  if constexpr (Kind == StressState::axisymmetric) input.dL(2, 2) = hoop * dt;
   if (transported.temperature) {
     input.temperature_change = transported.temperature[p] - transported.reference_temperature;
     input.temperature_step = transported.temperature_step[p];
@@ -82,6 +87,7 @@ template <int D, class Shape, StressState Kind, bool ExpansionWork, class Materi
     kept.volume[p] = b.volume[p];
     for (int i = 0; i < D; ++i)
       for (int j = 0; j < D; ++j) kept.L[p][D * i + j] = L[i][j];
+    kept.L[p][D * D] = hoop;
   }
   double expansion_work = 0.0;
   if constexpr (ExpansionWork) {
@@ -102,7 +108,7 @@ template <int D, class Shape, StressState Kind, bool ExpansionWork, class Materi
   return expansion_work;
 }
 
-// Calls f(update) with update(p, L) the material update of `b`'s particles:
+// Calls f(update) with update(p, L, hoop) the material update of `b`'s particles:
 // one dispatch on the material, the stress state and whether the batch asks
 // for nonlocal averages per call, none per particle.
 template <int D, class Shape, class F>
@@ -127,8 +133,8 @@ void with_stress_update(DiscreteSystem<D, Shape>& system, ParticleBatch<D>& b, F
           if constexpr (NonlocalModel<M>) {
             if (!b.nonlocal_others.empty()) {
               // A nonlocal model has no expansion strains: no expansion work.
-              f([&](std::size_t p, const double(&L)[D][D]) {
-                return update_particle_stress<D, Shape, Kind, false, M, true>(system, b, p, L, material, states[p],
+              f([&](std::size_t p, const double(&L)[D][D], double hoop) {
+                return update_particle_stress<D, Shape, Kind, false, M, true>(system, b, p, L, hoop, material, states[p],
                                                                              transported);
               });
               return;
@@ -136,8 +142,8 @@ void with_stress_update(DiscreteSystem<D, Shape>& system, ParticleBatch<D>& b, F
           }
           typename M::State no_state{};
           auto with_work = [&]<bool Work>() {
-            f([&](std::size_t p, const double(&L)[D][D]) {
-              return update_particle_stress<D, Shape, Kind, Work>(system, b, p, L, material,
+            f([&](std::size_t p, const double(&L)[D][D], double hoop) {
+              return update_particle_stress<D, Shape, Kind, Work>(system, b, p, L, hoop, material,
                                                                   states.empty() ? no_state : states[p], transported);
             });
           };
@@ -162,6 +168,8 @@ void with_stress_update(DiscreteSystem<D, Shape>& system, ParticleBatch<D>& b, F
           for_state.template operator()<StressState::uniaxial_stress>();
         } else if (system.stress_state == StressState::plane_stress) {
           for_state.template operator()<StressState::plane_stress>();
+        } else if (system.stress_state == StressState::axisymmetric) {
+          for_state.template operator()<StressState::axisymmetric>();
         } else {
           for_state.template operator()<StressState::plane_strain>();
         }
@@ -216,7 +224,9 @@ template <int Count>
 // One pass over the particles: g2p_motion, g2p_stress, or both (USL), from
 // one stencil per particle at its position at the start of the pass.
 // `Update`: flip for FLIP, PIC and their blend (flip_fraction), apic, xpic.
-template <int D, class Shape, bool Motion, bool Stress, VelocityUpdate Update = VelocityUpdate::flip>
+// `Hoop`: axisymmetric (the hoop rate, and no particle onto the axis).
+template <int D, class Shape, bool Motion, bool Stress, VelocityUpdate Update = VelocityUpdate::flip,
+          bool Hoop = false>
 void g2p(DiscreteSystem<D, Shape>& system) {
   constexpr bool apic = Motion && Update == VelocityUpdate::apic;
   constexpr bool xpic = Motion && Update == VelocityUpdate::xpic;
@@ -278,6 +288,7 @@ void g2p(DiscreteSystem<D, Shape>& system) {
         // Sums over the stencil, two nodes per lane pair, then the lanes
         // added. dv_sum: FLIP's velocity change, or XPIC's correction w.
         NodePair v_sum[D] = {}, dv_sum[D] = {}, L_sum[D][D] = {}, C_sum[D][D] = {};
+        [[maybe_unused]] NodePair hoop_sum = {};  // v_r at the particle, with L's velocities
         s.for_each_node_pair([&]<int Count>(int line, int k, std::size_t n) {
           const auto w = s.template pair_weights<Count>(line, k);
           const NodePair N = w.N;
@@ -293,6 +304,8 @@ void g2p(DiscreteSystem<D, Shape>& system) {
             }
             if constexpr (Stress)
               for (int j = 0; j < D; ++j) L_sum[i][j] += v * w.dN[j];
+            if constexpr (Hoop && Stress)
+              if (i == 0) hoop_sum += N * v;
           }
           if constexpr (apic) {
             const auto G = [&] {
@@ -312,7 +325,9 @@ void g2p(DiscreteSystem<D, Shape>& system) {
           dv[i] = sum(dv_sum[i]);
           for (int j = 0; j < D; ++j) L[i][j] = sum(L_sum[i][j]);
         }
-        if constexpr (Stress) energy.expansion_work += update_stress(p, L);
+        [[maybe_unused]] double hoop = 0.0;  // v_r / r
+        if constexpr (Hoop && Stress) hoop = sum(hoop_sum) / b.x[p][0];
+        if constexpr (Stress) energy.expansion_work += update_stress(p, L, hoop);
         if constexpr (Motion) {
           const Vec<D> x_new = b.x[p] + dt * v_grid;
           // A particle must stay where its stencil has nodes and may cross at
@@ -333,6 +348,7 @@ void g2p(DiscreteSystem<D, Shape>& system) {
               stays = stays && c_new[d] >= stay_lo[d] && c_new[d] <= stay_hi[d];
             }
           }
+          if constexpr (Hoop) inside = inside && x_new[0] > 0.0;  // r > 0: off the axis
           Vec<D> v_new;
           if constexpr (apic || xpic) {
             v_new = xpic ? Vec<D>(v_grid - dv) : v_grid;
@@ -342,8 +358,9 @@ void g2p(DiscreteSystem<D, Shape>& system) {
           if (!inside || !one_cell || !v_new.allFinite()) {
             system.flags.fail("a particle at " + position_text<D>(b.x[p]) + " would move to " +
                              position_text<D>(x_new) +
-                             (!v_new.allFinite() ? ", its velocity not finite"
-                              : !inside          ? ", outside the grid"
+                             (!v_new.allFinite()          ? ", its velocity not finite"
+                              : Hoop && !(x_new[0] > 0.0) ? ", onto or across the axis (r <= 0)"
+                              : !inside                   ? ", outside the grid"
                                                  : ", more than one cell in one step"));
             continue;
           }
@@ -362,7 +379,7 @@ void g2p(DiscreteSystem<D, Shape>& system) {
     if constexpr (Stress) {
       with_stress_update(system, b, particles);
     } else {
-      particles([](std::size_t, const double(&)[D][D]) { return 0.0; });
+      particles([](std::size_t, const double(&)[D][D], double) { return 0.0; });
     }
     // Only this task touches the block: its segments add up in batch order.
     BlockEnergy& sums = system.block_energy[block];
@@ -383,34 +400,53 @@ namespace detail {
 // g2p_motion (with g2p_stress under USL) for the scene's velocity update;
 // XPIC's correction first, while the particles are still where the step
 // found them.
-template <int D, class Shape, bool Stress>
+template <int D, class Shape, bool Stress, bool Hoop>
 void g2p_with_motion(DiscreteSystem<D, Shape>& system) {
   switch (system.velocity_update) {
-    case VelocityUpdate::apic: g2p<D, Shape, true, Stress, VelocityUpdate::apic>(system); return;
+    case VelocityUpdate::apic: g2p<D, Shape, true, Stress, VelocityUpdate::apic, Hoop>(system); return;
     case VelocityUpdate::xpic:
       xpic_correction(system);
-      g2p<D, Shape, true, Stress, VelocityUpdate::xpic>(system);
+      g2p<D, Shape, true, Stress, VelocityUpdate::xpic, Hoop>(system);
       return;
-    default: g2p<D, Shape, true, Stress>(system);
+    default: g2p<D, Shape, true, Stress, VelocityUpdate::flip, Hoop>(system);
   }
+}
+
+// The pass, with the hoop rate where the analysis is axisymmetric.
+template <int D, class Shape, bool Motion, bool Stress>
+void g2p_of_state(DiscreteSystem<D, Shape>& system) {
+  auto pass = [&]<bool Hoop>() {
+    if constexpr (Motion) {
+      g2p_with_motion<D, Shape, Stress, Hoop>(system);
+    } else {
+      g2p<D, Shape, false, Stress, VelocityUpdate::flip, Hoop>(system);
+    }
+  };
+  if constexpr (D == 2) {
+    if (system.stress_state == StressState::axisymmetric) {
+      pass.template operator()<true>();
+      return;
+    }
+  }
+  pass.template operator()<false>();
 }
 
 }  // namespace detail
 
 template <int D, class Shape>
 void g2p_motion(DiscreteSystem<D, Shape>& system) {
-  detail::g2p_with_motion<D, Shape, false>(system);
+  detail::g2p_of_state<D, Shape, true, false>(system);
 }
 
 template <int D, class Shape>
 void g2p_stress(DiscreteSystem<D, Shape>& system) {
-  detail::g2p<D, Shape, false, true>(system);
+  detail::g2p_of_state<D, Shape, false, true>(system);
 }
 
 // USL: both stages in one pass, N and dN at the start-of-step positions.
 template <int D, class Shape>
 void g2p_motion_and_stress(DiscreteSystem<D, Shape>& system) {
-  detail::g2p_with_motion<D, Shape, true>(system);
+  detail::g2p_of_state<D, Shape, true, true>(system);
 }
 
 }  // namespace flowmpm

@@ -63,7 +63,7 @@ void nonlocal_settle(DiscreteSystem<D, Shape>& system) {
                   double L[D][D];
                   for (int i = 0; i < D; ++i)
                     for (int j = 0; j < D; ++j) L[i][j] = kept.L[p][D * i + j];
-                  update(p, L);  // (keeps the same start again)
+                  update(p, L, kept.L[p][D * D]);  // (keeps the same start again)
                 }
               });
             }

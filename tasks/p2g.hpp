@@ -8,6 +8,10 @@
 // start of the step), and with linear shape functions under USL the nodal stiffness
 //   k_I = sum_p V_p M_p |dN_Ip|^2  (M the P-wave modulus; tasks/grid_update.hpp held_node).
 // In 1D and 2D only the in-plane block of sigma enters the force.
+// Axisymmetric (x = r, per radian, V_p = r_p A_p): the hoop stress adds
+//   f_I,r -= V_p sigma_tt N_Ip / r_p
+// ([Sulsky 1996]; the divergence of the stress in cylindrical coordinates),
+// and to the nodal stiffness V_p M_p (N_Ip / r_p)^2.
 // USL and MUSL map both from the same particle state, in one pass.
 #pragma once
 #include "discretisation/grid/stencil.hpp"
@@ -32,7 +36,8 @@ void set_accelerations(DiscreteSystem<D, Shape>& system) {
 // whichever is mapped, so the results do not depend on the grouping.
 // `Stiffness`: also the nodal stiffness of held_node (tasks/grid_update.hpp).
 // `Affine`: APIC's momentum, with the particles' affine velocities.
-template <int D, class Shape, bool Momentum, bool Force, bool Stiffness = false, bool Affine = false>
+// `Hoop`: axisymmetric, the hoop term of the force.
+template <int D, class Shape, bool Momentum, bool Force, bool Stiffness = false, bool Affine = false, bool Hoop = false>
 void p2g(DiscreteSystem<D, Shape>& system) {
   auto& grid = system.grid;
   for (int k = 0; k < system.field_count(); ++k) {
@@ -91,6 +96,11 @@ void p2g(DiscreteSystem<D, Shape>& system) {
       }
       [[maybe_unused]] double VM = 0.0;
       if constexpr (Stiffness) VM = b.volume[p] * modulus[b.material];
+      [[maybe_unused]] double hoop = 0.0, inv_r = 0.0;  // V sigma_tt / r, 1 / r
+      if constexpr (Hoop) {
+        inv_r = 1.0 / b.x[p][0];
+        hoop = b.volume[p] * b.stress[p][2] * inv_r;
+      }
       s.for_each_node_pair([&]<int Count>(int line, int k, std::size_t n) {
         const auto w = s.template pair_weights<Count>(line, k);
         const NodePair N = w.N;
@@ -109,11 +119,14 @@ void p2g(DiscreteSystem<D, Shape>& system) {
           for (int i = 0; i < D; ++i) {
             NodePair f = N * mg[i];
             for (int j = 0; j < D; ++j) f -= Vsigma[i][j] * w.dN[j];
+            if constexpr (Hoop)
+              if (i == 0) f -= hoop * N;
             store_nodes<Count>(to_force[i] + n, load_nodes<Count>(to_force[i] + n) + f);
           }
           if constexpr (Stiffness) {
             NodePair dN2 = w.dN[0] * w.dN[0];
             for (int j = 1; j < D; ++j) dN2 += w.dN[j] * w.dN[j];
+            if constexpr (Hoop) dN2 += (inv_r * inv_r) * (N * N);
             store_nodes<Count>(to_stiffness + n, load_nodes<Count>(to_stiffness + n) + VM * dN2);
           }
         }
@@ -123,27 +136,36 @@ void p2g(DiscreteSystem<D, Shape>& system) {
 }
 
 // The momentum pass, APIC's where the scene uses it.
-template <int D, class Shape, bool Force, bool Stiffness>
+template <int D, class Shape, bool Force, bool Stiffness, bool Hoop = false>
 void p2g_with_momentum(DiscreteSystem<D, Shape>& system) {
   if (system.velocity_update == VelocityUpdate::apic) {
-    p2g<D, Shape, true, Force, Stiffness, true>(system);
+    p2g<D, Shape, true, Force, Stiffness, true, Hoop>(system);
   } else {
-    p2g<D, Shape, true, Force, Stiffness>(system);
+    p2g<D, Shape, true, Force, Stiffness, false, Hoop>(system);
   }
 }
 
 // The force pass, with the nodal stiffness where the grid keeps it (USL
-// with linear shape functions).
+// with linear shape functions), and the hoop term in axisymmetric.
 template <int D, class Shape, bool Momentum>
 void p2g_with_force(DiscreteSystem<D, Shape>& system) {
-  constexpr bool jumps = Shape::gradient_jumps;
-  if (jumps && !system.grid.stiffness.empty()) {  // every field has it then
-    if constexpr (Momentum) p2g_with_momentum<D, Shape, true, jumps>(system);
-    else p2g<D, Shape, false, true, jumps>(system);
-  } else {
-    if constexpr (Momentum) p2g_with_momentum<D, Shape, true, false>(system);
-    else p2g<D, Shape, false, true>(system);
+  auto with_stiffness = [&]<bool Hoop>() {
+    constexpr bool jumps = Shape::gradient_jumps;
+    if (jumps && !system.grid.stiffness.empty()) {  // every field has it then
+      if constexpr (Momentum) p2g_with_momentum<D, Shape, true, jumps, Hoop>(system);
+      else p2g<D, Shape, false, true, jumps, false, Hoop>(system);
+    } else {
+      if constexpr (Momentum) p2g_with_momentum<D, Shape, true, false, Hoop>(system);
+      else p2g<D, Shape, false, true, false, false, Hoop>(system);
+    }
+  };
+  if constexpr (D == 2) {
+    if (system.stress_state == StressState::axisymmetric) {
+      with_stiffness.template operator()<true>();
+      return;
+    }
   }
+  with_stiffness.template operator()<false>();
 }
 
 }  // namespace detail

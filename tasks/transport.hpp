@@ -177,8 +177,13 @@ void transport_flux(DiscreteSystem<D, Shape>& system) {
             if (!b.flux_faces.empty() && b.flux_faces[p] != 0) {
               for (int f = 0; f < 6; ++f) {
                 if (!(b.flux_faces[p] & (1u << f))) continue;
-                s_heat += heat_through_face[b.surface_flux[f]];
-                s_solvent += solvent_through_face[b.surface_flux[f]];
+                // Axisymmetric: per radian, the face's area times its radius
+                // (a face normal to r sits half a particle from its centre).
+                double r = 1.0;
+                if (system.stress_state == StressState::axisymmetric)
+                  r = b.x[p][0] + (f / 2 == 0 ? (f % 2 ? 1.0 : -1.0) * b.half_width[0] * grid.h[0] : 0.0);
+                s_heat += r * heat_through_face[b.surface_flux[f]];
+                s_solvent += r * solvent_through_face[b.surface_flux[f]];
               }
             }
             s.for_each_node_pair([&]<int Count>(int line, int k, std::size_t n) {

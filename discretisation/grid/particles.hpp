@@ -33,7 +33,9 @@ struct StepStart {
   MaterialStates states;
   std::vector<Voigt> stress, strain;
   std::vector<double> volume;
-  std::vector<std::array<double, D * D>> L;  // the step's velocity gradient, row by row (1/s)
+  // The step's velocity gradient, row by row, then the hoop rate v_r / r
+  // (axisymmetric; 0 otherwise) (1/s).
+  std::vector<std::array<double, D * D + 1>> L;
 };
 
 template <int D>

@@ -68,6 +68,10 @@ Case read_case(const std::filesystem::path& file, const std::vector<std::string>
   check_rigid_bodies(t, c.system);
   const auto node_sets = t.tables("node_sets");
   for (std::size_t i = 0; i < node_sets.size(); ++i) read_node_set(node_sets[i], c.system, i);
+  if (c.system.axisymmetric) {
+    TableReader grid = t.table("grid");
+    add_axis_node_set(grid, c.system);
+  }
   const auto fluxes = t.tables("surface_fluxes");
   for (std::size_t i = 0; i < fluxes.size(); ++i) read_surface_flux(fluxes[i], c.system, i);
   for (TableReader& load : t.tables("loads")) read_load(load, c.system);

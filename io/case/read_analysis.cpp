@@ -23,7 +23,9 @@ void read_analysis(TableReader t, Case& c) {
   s.shape_function = shape_function_named(t.choice("shape_function", shape_function_names(), "linear"));
   if (t.has("stress_state")) {
     t.require(s.dimension == 2, "stress_state", "no stress_state outside 2D (3D is full, 1D uniaxial stress)");
-    s.plane_stress = t.choice("stress_state", {"plane_strain", "plane_stress"}) == "plane_stress";
+    const std::string state = t.choice("stress_state", {"plane_strain", "plane_stress", "axisymmetric"});
+    s.plane_stress = state == "plane_stress";
+    s.axisymmetric = state == "axisymmetric";
   }
   const std::string update = t.choice("velocity_update", {"flip", "pic", "blend", "apic", "xpic"}, "flip");
   for (VelocityUpdate u : {VelocityUpdate::flip, VelocityUpdate::pic, VelocityUpdate::blend, VelocityUpdate::apic,

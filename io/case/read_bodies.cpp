@@ -134,6 +134,8 @@ void read_body(TableReader t, SystemSpec& c, std::size_t index, const std::files
   b.velocity = vector_of(t, "velocity", c.dimension);
   if (t.has("angular_velocity")) {
     t.require(c.dimension > 1, "angular_velocity", "no angular_velocity in 1D");
+    t.require(!c.axisymmetric, "angular_velocity",
+              "no angular_velocity in axisymmetric (a turn in the (r, z) section breaks the symmetry)");
     // 2D: the rate about z, a number; 3D: a vector (rad/s).
     if (c.dimension == 2) {
       b.angular_velocity[2] = t.number("angular_velocity");

@@ -95,7 +95,7 @@ struct Field {
 
 // Writes one field into `group`.
 void write_field(hid_t group, const std::string& group_name, std::size_t count, const Field& field,
-                 const std::string& file) {
+                 const std::string& file, const char* tensor_components) {
   const std::string where = group_name + "/" + field.name;
   const hsize_t dims[2] = {count, field.components};
   Hdf5Handle space(H5Screate_simple(field.components == 1 ? 1 : 2, dims, nullptr), H5Sclose);
@@ -110,7 +110,7 @@ void write_field(hid_t group, const std::string& group_name, std::size_t count, 
     fail(file, "cannot write dataset " + where);
   if (field.units != nullptr) write_string_attribute(dataset.get(), "units", field.units, file, where);
   if (field.components == 6)
-    write_string_attribute(dataset.get(), "components", tensor_output_components, file, where);
+    write_string_attribute(dataset.get(), "components", tensor_components, file, where);
 }
 
 // Reads a numeric attribute into `value`; false when it is absent or unreadable.
@@ -285,8 +285,8 @@ void ResultsH5::write_index() const {
     write_string_attribute(root, "scheme", m.scheme, file, "/");
     write_string_attribute(root, "shape_function", m.shape_function, file, "/");
     write_string_attribute(root, "units", "SI: m, s, kg, Pa, J", file, "/");
-    write_string_attribute(root, "tensor_components", tensor_output_components, file, "/");
-    write_string_attribute(root, "vector_components", "x y z (padded with 0 below 3D)", file, "/");
+    write_string_attribute(root, "tensor_components", tensor_output_components_of(m.stress_state), file, "/");
+    write_string_attribute(root, "vector_components", vector_output_components_of(m.stress_state), file, "/");
     write_string_attribute(root, "rows", "particle id: row i is the same particle at every step", file, "/");
     write_string_attribute(root, "materials", m.materials, true, file, "/");
     // The connectivity 0..n-1: every step's topology reads its first n.
@@ -296,7 +296,7 @@ void ResultsH5::write_index() const {
       write_field(root, "", index_length_,
                   Field{particle_index + 1, index.data(), index.size(), 1, H5T_STD_I32LE, H5T_NATIVE_INT32,
                         sizeof(std::int32_t), nullptr},
-                  file);
+                  file, tensor_output_components_of(m.stress_state));
     }
     {
       Hdf5Handle steps(H5Gcreate2(root, "/steps", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
@@ -361,7 +361,8 @@ void ResultsH5::write(const ParticleSnapshot& snapshot) {
     const hid_t root = handle.get();
     write_scalar_attribute(root, "time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, snapshot.time, file, "/");
     write_scalar_attribute(root, "step", H5T_STD_I64LE, H5T_NATIVE_INT64, snapshot.step, file, "/");
-    for (const Field& field : fields) write_field(root, "", snapshot.count, field, file);
+    for (const Field& field : fields)
+      write_field(root, "", snapshot.count, field, file, tensor_output_components_of(metadata_.stress_state));
     close_file(handle, file);
   });
   if (written_.empty()) index_length_ = snapshot.count;
