@@ -134,7 +134,7 @@ TEST_CASE("plane strain keeps F_zz = 1: sigma_zz = lambda ln J / J") {
     point.step(dL);
   }
   const double J = point.state.F.determinant();
-  CHECK(point.state.F(2, 2) == 1.0);
+  CHECK(std::abs(point.state.F(2, 2) - 1.0) < 1e-14);  // the 3 x 3 inverse's round-off
   CHECK(point.sigma[2] == doctest::Approx(rubber.lambda * std::log(J) / J).epsilon(1e-12));
   double ratio;
   rubber.state_values(point.state, &ratio);
@@ -169,12 +169,13 @@ TEST_CASE("initial stress: the stretch V whose stress it is, in 3D and in 1D") {
   init.stress = {120.0, -40.0, 30.0, 25.0, -60.0, 80.0};
   const NeoHookean::State s = rubber.initial_state(init);
   CHECK((s.F - s.F.transpose()).norm() < 1e-15);  // no rotation
+  // Newton stops at 1e-13 of 2 mu + |lambda| + max |s_i| = 1470 Pa in J sigma.
   const Voigt sigma = rubber.stress(s.F);
-  for (int i = 0; i < 6; ++i) CHECK(sigma[i] == doctest::Approx(init.stress[i]).epsilon(1e-12).scale(1.0));
+  for (int i = 0; i < 6; ++i) CHECK(std::abs(sigma[i] - init.stress[i]) < 2e-10);
   // A bar in uniaxial stress: the 1D update keeps it.
   init.stress = {250.0, 0, 0, 0, 0, 0};
   MaterialPoint<NeoHookean, StressState::uniaxial_stress> bar(rubber, init);
   bar.strain({0, 0, 0, 0, 0, 0});
-  CHECK(bar.sigma[0] == doctest::Approx(250.0).epsilon(1e-12));
+  CHECK(std::abs(bar.sigma[0] - 250.0) < 2e-10);
   CHECK(rubber.initial_state(ParticleInit{}).F == Eigen::Matrix3d::Identity());
 }
