@@ -19,6 +19,8 @@
 #include <numbers>
 #include <type_traits>
 
+#include <Eigen/Geometry>
+
 #include "core/errors.hpp"
 #include "discretisation/bodies/body_overlap.hpp"
 #include "discretisation/nonlocal/nonlocal_average.hpp"
@@ -127,6 +129,27 @@ inline double body_top(const BodySpec& body, const ParticleList& list, int axis,
   return top;
 }
 
+// Adds a rigid rotation at `omega` (rad/s) about the centroid x_c of the
+// body's particles (volume-weighted: one density per body, so the centre
+// of mass): v_p += omega x (x_p - x_c). The body's linear momentum is
+// unchanged and its angular momentum about x_c is I omega.
+template <int D>
+void add_rigid_spin(ParticleBatch<D>& batch, const ParticleList& list, const Vec3& omega) {
+  Vec3 centroid{};
+  double volume = 0.0;
+  for (std::size_t p = 0; p < list.size(); ++p) {
+    for (int d = 0; d < 3; ++d) centroid[d] += list.volume[p] * list.position[p][d];
+    volume += list.volume[p];
+  }
+  for (double& c : centroid) c /= volume;
+  for (std::size_t p = 0; p < list.size(); ++p) {
+    const Eigen::Vector3d r(list.position[p][0] - centroid[0], list.position[p][1] - centroid[1],
+                            list.position[p][2] - centroid[2]);
+    const Eigen::Vector3d spin = Eigen::Vector3d(omega[0], omega[1], omega[2]).cross(r);
+    for (int d = 0; d < D; ++d) batch.v[p][d] += spin[d];
+  }
+}
+
 }  // namespace detail
 
 template <int D, class Shape>
@@ -209,6 +232,7 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
       }
     }
     batch.v.assign(n, v0);
+    if (body.angular_velocity != Vec3{}) detail::add_rigid_spin(batch, list, body.angular_velocity);
     if (spec.keep_initial_positions) batch.x0 = batch.x;
     batch.volume = list.volume;
     double top = 0.0;

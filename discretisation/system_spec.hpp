@@ -49,6 +49,9 @@ struct BodySpec {
   Vec3 spacing{};
   std::optional<ParticleList> particles;
   Vec3 velocity{};  // initial velocity (m/s)
+  // Initial angular velocity (rad/s) about the centroid of the body's
+  // particles: v_p = velocity + omega x (x_p - x_c). In 2D only z.
+  Vec3 angular_velocity{};
   // Initial stress (Pa); particles from a file may carry their own instead.
   std::optional<InitialStressVariant> initial_stress;
   // Bodies (indices into SystemSpec::bodies) that lose their particles

@@ -501,3 +501,63 @@ TEST_CASE("bad initial stress is rejected with the key and what was expected") {
     CHECK(m.find("bodies[0].initial_stress.stress: expected sigma_yz and sigma_xz zero in 2D") != std::string::npos);
   }
 }
+
+TEST_CASE("an initial angular velocity: v = velocity + omega x (x - x_c), x_c the centre of mass") {
+  SUBCASE("2D: a disk off the grid's centre, moving and spinning") {
+    const Sim2 sim = build("spin_2d", case_2d("[[bodies]]\nmaterial = \"elastic\"\nparticles_per_cell = 2\n"
+                                              "shape = { type = \"sphere\", center = [0.4, 0.55], radius = 0.2 }\n"
+                                              "velocity = [1.0, -2.0]\nangular_velocity = 3.0\n"));
+    // The lattice is symmetric about the disk's centre: x_c = (0.4, 0.55).
+    double m = 0.0, px = 0.0, py = 0.0, L = 0.0, I = 0.0;
+    for (const auto& b : sim.system().batches) {
+      for (std::size_t p = 0; p < b.size(); ++p) {
+        const double rx = b.x[p][0] - 0.4, ry = b.x[p][1] - 0.55;
+        CHECK(b.v[p][0] == doctest::Approx(1.0 - 3.0 * ry).epsilon(1e-12));
+        CHECK(b.v[p][1] == doctest::Approx(-2.0 + 3.0 * rx).epsilon(1e-12));
+        m += b.mass[p], px += b.mass[p] * b.v[p][0], py += b.mass[p] * b.v[p][1];
+        L += b.mass[p] * (rx * b.v[p][1] - ry * b.v[p][0]);
+        I += b.mass[p] * (rx * rx + ry * ry);
+      }
+    }
+    // The spin adds no linear momentum, and angular momentum I omega.
+    CHECK(px == doctest::Approx(m * 1.0).epsilon(1e-12));
+    CHECK(py == doctest::Approx(m * -2.0).epsilon(1e-12));
+    CHECK(L == doctest::Approx(I * 3.0).epsilon(1e-12));
+  }
+  SUBCASE("3D: a box spun about an oblique axis") {
+    const Case c = testing::case_from_text(
+        "spin_3d",
+        "[analysis]\ndimension = 3\ndt = 1e-4\nsteps = 1\n[grid]\norigin = [0.0, 0.0, 0.0]\ncell_size = 0.1\n"
+        "cells = [10, 10, 10]\n[materials.elastic]\ntype = \"linear_elastic\"\ndensity = 1000.0\n"
+        "youngs_modulus = 1e6\npoisson_ratio = 0.3\n[[bodies]]\nmaterial = \"elastic\"\nparticles_per_cell = 2\n"
+        "min = [0.2, 0.3, 0.4]\nmax = [0.6, 0.5, 0.8]\nangular_velocity = [1.0, -2.0, 0.5]\n");
+    const auto sim = testing::simulation<3, LinearShape>(c);
+    const Eigen::Vector3d omega(1.0, -2.0, 0.5), centre(0.4, 0.4, 0.6);
+    for (const auto& b : sim.system().batches) {
+      for (std::size_t p = 0; p < b.size(); ++p) {
+        const Eigen::Vector3d v = omega.cross(Eigen::Vector3d(b.x[p][0], b.x[p][1], b.x[p][2]) - centre);
+        for (int d = 0; d < 3; ++d) CHECK(b.v[p][d] == doctest::Approx(v[d]).scale(1.0).epsilon(1e-12));
+      }
+    }
+  }
+  SUBCASE("refused in 1D, as a 2D array, and for a rigid body") {
+    const std::string body = "[[bodies]]\nmaterial = \"elastic\"\nparticles_per_cell = 2\nmin = [0.2, 0.2]\nmax = [0.4, 0.4]\n";
+    CHECK(rejection("spin_array", case_2d(body + "angular_velocity = [1.0, 2.0]\n"))
+              .find("bodies[0].angular_velocity: expected a number") != std::string::npos);
+    const std::string rigid = "[[bodies]]\nname = \"wall\"\nrigid = {}\nangular_velocity = 1.0\nparticles_per_cell = 2\n"
+                              "min = [0.2, 0.2]\nmax = [0.4, 0.4]\n";
+    CHECK(rejection("spin_rigid", case_2d(rigid)).find("bodies[0].angular_velocity: expected nothing: a rigid body") !=
+          std::string::npos);
+    const std::string one_d =
+        "[analysis]\ndimension = 1\ndt = 1e-4\nsteps = 1\n[grid]\norigin = [0.0]\ncell_size = 0.1\ncells = [10]\n"
+        "[materials.elastic]\ntype = \"linear_elastic\"\ndensity = 1000.0\nyoungs_modulus = 1e6\npoisson_ratio = 0.3\n"
+        "[[bodies]]\nmaterial = \"elastic\"\nparticles_per_cell = 2\nmin = [0.2]\nmax = [0.4]\nangular_velocity = 1.0\n";
+    std::string m;
+    try {
+      testing::case_from_text("spin_1d", one_d);
+    } catch (const CaseError& e) {
+      m = e.what();
+    }
+    CHECK(m.find("bodies[0].angular_velocity: expected no angular_velocity in 1D") != std::string::npos);
+  }
+}

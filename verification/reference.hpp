@@ -23,6 +23,7 @@
 #include "verification/lap_shear.hpp"
 #include "verification/plate_with_hole.hpp"
 #include "verification/prandtl_punch.hpp"
+#include "verification/rigid_rotation.hpp"
 #include "verification/slab_transport.hpp"
 #include "verification/swelling_bending.hpp"
 #include "verification/swelling_slab.hpp"
@@ -37,7 +38,7 @@ namespace flowmpm {
 using ReferenceSolution =
     std::variant<AxialVibration, ElasticWave, UniaxialStress, ColumnSelfWeight, SlabTransport, ThermalStress,
                  SwellingSlab, SwellingBending, UniformStressReference, PlateWithHole, ThickCylinder, Cantilever,
-                 ElasticImpact, TaylorImpact, Incline, PrandtlPunch, LapShear>;
+                 ElasticImpact, TaylorImpact, Incline, PrandtlPunch, LapShear, RigidRotation>;
 using ReferenceSolutions = Registry<ReferenceSolution>;
 
 class Reference {

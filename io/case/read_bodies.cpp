@@ -99,7 +99,7 @@ void read_rigid_body(TableReader& t, SystemSpec& c, BodySpec& b, const std::file
     if (!r.has("velocity")) return;
     *b.rigid_velocity = read_axis_functions(r, "velocity", c.dimension, "a velocity in m/s");
   });
-  for (const char* key : {"material", "velocity", "material_axes", "material_axes_center", "temperature",
+  for (const char* key : {"material", "velocity", "angular_velocity", "material_axes", "material_axes_center", "temperature",
                           "concentration", "initial_stress"}) {
     if (t.has(key)) t.fail(key, "nothing: a rigid body has no material and no state; it moves with rigid.velocity");
   }
@@ -132,6 +132,15 @@ void read_body(TableReader t, SystemSpec& c, std::size_t index, const std::files
   if (b.material < 0) t.fail("material", "the name of a material in [materials]: " + known);
   read_body_particles(t, c, b, case_file);
   b.velocity = vector_of(t, "velocity", c.dimension);
+  if (t.has("angular_velocity")) {
+    t.require(c.dimension > 1, "angular_velocity", "no angular_velocity in 1D");
+    // 2D: the rate about z, a number; 3D: a vector (rad/s).
+    if (c.dimension == 2) {
+      b.angular_velocity[2] = t.number("angular_velocity");
+    } else {
+      b.angular_velocity = vector_of(t, "angular_velocity", 3);
+    }
+  }
   const bool file_axes = b.particles && !b.particles->material_axes.empty();
   if (t.has("material_axes")) {
     t.require(c.dimension > 1, "material_axes", "no material axes in 1D");
