@@ -16,8 +16,10 @@
 
 #include <cmath>
 
+#include "discretisation/shapes/shape_linear.hpp"
 #include "material_point_driver.hpp"
 #include "materials/neo_hookean.hpp"
+#include "test_helpers.hpp"
 
 using namespace flowmpm;
 using testing::MaterialPoint;
@@ -178,4 +180,33 @@ TEST_CASE("initial stress: the stretch V whose stress it is, in 3D and in 1D") {
   bar.strain({0, 0, 0, 0, 0, 0});
   CHECK(std::abs(bar.sigma[0] - 250.0) < 2e-10);
   CHECK(rubber.initial_state(ParticleInit{}).F == Eigen::Matrix3d::Identity());
+}
+
+TEST_CASE("whole case: CB-Geo's cube of neo-Hookean material compressed to 0.7 of its height") {
+  // configs/uniaxial_stress/case1_usl.toml (one 1 m cell, 2 x 2 x 2
+  // particles, the bottom held in y, x and z free; E = 1000 Pa, nu = 0.2)
+  // with the top nodes at -0.1 m/s for 3.57 s: the material follows the
+  // grid's affine field, each step multiplying F_yy by (1 + d/2) / (1 - d/2),
+  // d = -0.1 dt, to l = 0.69978. Closed form: sigma_yy = mu (l^2 - s^2) / J
+  // (-330.2 Pa). Measured: MEASURED; the lateral inertia of the free sides
+  // (rho c times their speed, 0.3 Pa) is the error's scale. Bound 1 %.
+  const Case c = read_case(testing::config("uniaxial_stress/case1_usl.toml"),
+                           {"materials.elastic.type=neo_hookean", "node_sets.1.velocity={ y = -0.1 }",
+                            "analysis.end_time=3.57"});
+  auto sim = testing::simulation<3, LinearShape>(c);
+  const double dt = c.time_step.fixed_dt();
+  int steps = 0;
+  while (sim.system().t < c.time_step.end_time() - 0.5 * dt) sim.advance(), ++steps;
+  const double d = -0.1 * dt, l = std::pow((1.0 + 0.5 * d) / (1.0 - 0.5 * d), steps);
+  const NeoHookean& m = std::get<NeoHookean>(c.system.materials[0].model);
+  const double s = lateral_stretch(m, l), expected = m.mu * (l * l - s * s) / (l * s * s);
+  const auto& b = sim.system().batches[0];
+  const auto& states = std::get<StateArray<NeoHookean>>(b.states);
+  for (std::size_t p = 0; p < b.size(); ++p) {
+    CAPTURE(p);
+    CHECK(b.stress[p][1] == doctest::Approx(expected).epsilon(0.01));
+    CHECK(states[p].F(1, 1) == doctest::Approx(l).epsilon(1e-9));
+    CHECK(states[p].F(0, 0) == doctest::Approx(s).epsilon(0.01));
+    MESSAGE(b.stress[p][1] / expected - 1 << " " << states[p].F(0, 0) / s - 1);
+  }
 }
