@@ -187,9 +187,10 @@ TEST_CASE("whole case: CB-Geo's cube of neo-Hookean material compressed to 0.7 o
   // particles, the bottom held in y, x and z free; E = 1000 Pa, nu = 0.2)
   // with the top nodes at -0.1 m/s for 3.57 s: the material follows the
   // grid's affine field, each step multiplying F_yy by (1 + d/2) / (1 - d/2),
-  // d = -0.1 dt, to l = 0.69978. Closed form: sigma_yy = mu (l^2 - s^2) / J
-  // (-330.2 Pa). Measured: MEASURED; the lateral inertia of the free sides
-  // (rho c times their speed, 0.3 Pa) is the error's scale. Bound 1 %.
+  // d = -0.1 dt, to l = 0.69977. Closed form: sigma_yy = mu (l^2 - s^2) / J
+  // = -341.17 Pa, s = 1.07085. Measured in every particle: sigma_yy 1.8e-6
+  // and F_xx 4.4e-7 from it (the free sides' lateral inertia); the brief
+  // asks for 1 %, asserted 1e-4 and 1e-5.
   const Case c = read_case(testing::config("uniaxial_stress/case1_usl.toml"),
                            {"materials.elastic.type=neo_hookean", "node_sets.1.velocity={ y = -0.1 }",
                             "analysis.end_time=3.57"});
@@ -204,9 +205,8 @@ TEST_CASE("whole case: CB-Geo's cube of neo-Hookean material compressed to 0.7 o
   const auto& states = std::get<StateArray<NeoHookean>>(b.states);
   for (std::size_t p = 0; p < b.size(); ++p) {
     CAPTURE(p);
-    CHECK(b.stress[p][1] == doctest::Approx(expected).epsilon(0.01));
+    CHECK(b.stress[p][1] == doctest::Approx(expected).epsilon(1e-4));
     CHECK(states[p].F(1, 1) == doctest::Approx(l).epsilon(1e-9));
-    CHECK(states[p].F(0, 0) == doctest::Approx(s).epsilon(0.01));
-    MESSAGE(b.stress[p][1] / expected - 1 << " " << states[p].F(0, 0) / s - 1);
+    CHECK(states[p].F(0, 0) == doctest::Approx(s).epsilon(1e-5));
   }
 }
