@@ -1,3 +1,4 @@
+#include <cmath>
 #include <string>
 
 #include <spdlog/spdlog.h>
@@ -27,6 +28,35 @@ std::string time_step_limits(const TimeStepLimit& limits) {
                      "{:.4g} m^2/s): the {} limit governs",
                      limits.wave.dt(), limits.wave.material, diffusion.field, diffusion.dt, diffusion.material,
                      diffusion.diffusivity, limits.diffusion_governs() ? "diffusion" : "wave");
+}
+
+// Each strain_softening material's crack band: the nonlocal length l and
+// whether the cells resolve it (docs/theory/softening.md, "Choosing l").
+template <int D>
+void log_crack_bands(spdlog::logger& log, const Case& c, double cell_volume) {
+  const double h = std::pow(cell_volume, 1.0 / D);
+  for (const NamedMaterial& m : c.system.materials) {
+    const auto* s = std::get_if<StrainSoftening>(&m.model);
+    if (!s || !s->parameters.fracture_energy) continue;
+    if (!s->parameters.nonlocal_length) {
+      log.info("material '{}': the crack band of one cell (nonlocal_length = 0)", m.name);
+      continue;
+    }
+    const double l = *s->parameters.nonlocal_length;
+    const bool by_default = l == StrainSoftening::default_nonlocal_length(s->parameters);
+    log.info("material '{}': the crack band's opening averaged over nonlocal_length l = {} m ({}), {:.3g} cells",
+             m.name, readable_text(l), by_default ? "the default, 2 G_c / (E eps_i^2)" : "given", l / h);
+    if (l < 6.0 * h) {
+      log.warn("material '{}': l = {} m is only {:.2g} cells: a band several cells wide fills the window and "
+               "dissipates more than G_c (under-resolved); cells below l / 6 = {} m resolve it",
+               m.name, readable_text(l), l / h, readable_text(l / 6.0));
+    }
+    if (const double cells = std::pow(4.0 * l / h, D); cells > 1e5) {
+      log.warn("material '{}': the window reaches 4 l = {} m, up to {:.3g} cells around each softening particle "
+               "(slow); give nonlocal_length, a material length (about three aggregate sizes for concrete)",
+               m.name, readable_text(4.0 * l), cells);
+    }
+  }
 }
 
 template <int D, class Shape>
@@ -61,6 +91,7 @@ void log_system(spdlog::logger& log, const Case& c, const Simulation<D, Shape>& 
     log.info("nonlocal averages: over the initial positions (x0 stored), settled with the step's end by "
              "nonlocal_settle");
   }
+  log_crack_bands<D>(log, c, system.grid.h.prod());
   if (system.contact) {
     const auto& contact = *system.contact;
     log.info("contact: {} velocity fields ({} deformable contact bodies, {} rigid, and the grid's for the rest)",

@@ -27,11 +27,15 @@ StrainSoftening StrainSoftening::read(ParameterTable& t) {
   }
   p.transport = TransportProperties::read(t, isotropic_axes);
   if (t.has("nonlocal_length")) {
-    p.nonlocal_length = t.number("nonlocal_length");
+    const double l = t.number("nonlocal_length");
     t.require(p.fracture_energy.has_value(), "nonlocal_length",
               "fracture_energy beside it, not failure_strain (l measures the crack band's opening, "
               "against w_c = 2 G_c / (E eps_i))");
-    t.require(*p.nonlocal_length > 0.0, "nonlocal_length", "a positive nonlocal length l in m");
+    t.require(l >= 0.0, "nonlocal_length",
+              "a nonlocal length l >= 0 in m (0: the crack band of one cell, for a band that localises in a cell)");
+    if (l > 0.0) p.nonlocal_length = l;
+  } else if (p.fracture_energy) {
+    p.nonlocal_length = default_nonlocal_length(p);
   }
   return StrainSoftening(p);
 }

@@ -96,9 +96,17 @@ struct StrainSoftening {
     std::optional<double> fracture_energy;
     TransportProperties transport;  // heat capacity, conductivity, diffusivity (scalars)
     // With fracture_energy only: l (m) of the nonlocal band opening; absent:
-    // the band is the particle's cell.
+    // the band is the particle's cell. Read as default_nonlocal_length when
+    // the case gives none, absent when it gives 0.
     std::optional<double> nonlocal_length;
   };
+  // The default l: the snap-back length w_c / eps_i = 2 G_c / (E eps_i^2),
+  // the widest band that can soften on the law without snapping back
+  // (twice Hillerborg's E G_c / f^2, [Hillerborg 1976]): a band that forms
+  // narrower than it fits in the window (docs/theory/softening.md).
+  static double default_nonlocal_length(const Parameters& p) {
+    return 2.0 * *p.fracture_energy / (p.youngs_modulus * p.initiation_strain * p.initiation_strain);
+  }
   struct State {
     Voigt eps{};              // total strain
     double kappa = 0.0;       // largest equivalent strain reached

@@ -92,7 +92,7 @@ TEST_CASE("MUSL wiring") {
 }
 
 TEST_CASE("nonlocal averages: nonlocal_settle right after g2p_stress, only where a model asks") {
-  const std::string bar = "materials/strain_softening_symmetric_bar.toml";  // nonlocal_length
+  const std::string bar = "materials/strain_softening_symmetric_bar.toml";  // the default nonlocal band, MUSL
   using enum Stage;
   check_order(recorded_order<2>("usl", false, bar),
               {p2g_momentum, p2g_force, grid_velocity, grid_integrate, g2p_motion, g2p_stress, nonlocal_settle}, 2);
@@ -104,8 +104,9 @@ TEST_CASE("nonlocal averages: nonlocal_settle right after g2p_stress, only where
               2);
   const Case c = read_case(testing::config(bar));
   CHECK(testing::simulation<2, LinearShape>(c).graph().wiring().describe() ==
-        "p2g_momentum & p2g_force -> grid_velocity -> grid_integrate -> g2p_motion & g2p_stress -> nonlocal_settle");
-  // The notched bar (strain_softening without nonlocal_length): the plain wiring.
+        "p2g_momentum & p2g_force -> grid_velocity -> grid_integrate -> g2p_motion -> remap -> grid_velocity -> "
+        "g2p_stress -> nonlocal_settle");
+  // The notched bar (strain_softening, nonlocal_length = 0): the plain wiring.
   const Case notched = read_case(testing::config("materials/strain_softening_bar.toml"));
   CHECK(testing::simulation<2, LinearShape>(notched).graph().wiring().describe() ==
         scheme_named("usl").wiring.describe());
