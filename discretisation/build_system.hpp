@@ -303,6 +303,7 @@ void build_system(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
         for (std::size_t p = 0; p < n; ++p) {
           const Vec3 axes = list.material_axes.empty() ? body.material_axes : list.material_axes[p];
           init.axes_degrees = axes;
+          init.stress = batch.stress[p];
           for (int d = 0; d < D; ++d) init.position[d] = batch.x[p][d];
           if (const auto& center = body.material_axes_center; center && D > 1) {
             const double radial = std::atan2(init.position[1] - (*center)[1], init.position[0] - (*center)[0]);

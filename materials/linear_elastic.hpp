@@ -3,8 +3,11 @@
 //   lambda = E nu / ((1 + nu)(1 - 2 nu)), mu = E / (2 (1 + nu)),
 // with d eps_m = d eps - (alpha d(T - T_ref) + beta dc) I the mechanical
 // part of the strain increment: the isotropic expansion takes no stress
-// (materials/expansion.hpp). Rate form, so that it composes with return
-// mapping later.
+// (materials/expansion.hpp). Rate form, objective: before the increment is
+// added the stress is turned with the material, sigma <- dR sigma dR^T, dR
+// the Cayley increment of the spin skew(dL) ([Hughes 1980],
+// materials/rotation.hpp; a Jaumann-type rate, the same as von_mises'), so
+// a rigid rotation turns the stress and does not load it. 1D has no spin.
 #pragma once
 #include <cmath>
 
@@ -12,6 +15,7 @@
 #include "materials/expansion.hpp"
 #include "materials/lame.hpp"
 #include "materials/material_input.hpp"
+#include "materials/rotation.hpp"
 #include "materials/stress_state.hpp"
 #include "materials/transport_properties.hpp"
 
@@ -56,6 +60,7 @@ struct LinearElastic {
   // th the expansion increment.
   template <StressState Kind>
   void update(State&, Voigt& sigma, Voigt& deps, const MaterialInput& in) const {
+    if constexpr (Kind != StressState::uniaxial_stress) rotate_with_spin(sigma, in.dL);
     if (!parameters.expansion.any()) return elastic_update<Kind>(sigma, deps);
     // The update sees the mechanical increment d eps - th I; the total is restored after.
     const double th = parameters.expansion.isotropic_step(in);

@@ -40,6 +40,7 @@
 
 #include "core/registry.hpp"
 #include "materials/linear_elastic.hpp"
+#include "materials/neo_hookean.hpp"
 #include "materials/nonlocal_model.hpp"
 #include "materials/orthotropic.hpp"
 #include "materials/strain_softening.hpp"
@@ -48,7 +49,7 @@
 
 namespace flowmpm {
 
-using Material = std::variant<LinearElastic, Orthotropic, TransverselyIsotropic, VonMises, StrainSoftening>;
+using Material = std::variant<LinearElastic, Orthotropic, TransverselyIsotropic, VonMises, StrainSoftening, NeoHookean>;
 using Materials = Registry<Material>;
 
 // The internal variables of every particle of a batch, one array per model.

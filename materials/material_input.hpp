@@ -5,6 +5,8 @@
 
 #include <Eigen/Core>
 
+#include "core/voigt.hpp"
+
 namespace flowmpm {
 
 struct MaterialInput {
@@ -51,6 +53,11 @@ struct ParticleInit {
   // band of localised strain is a cell wide, however many particles per
   // cell (crack band regularisation).
   double cell_length = 0.0;
+  // The particle's initial stress (Pa; the body's initial_stress or its
+  // particle file's, else 0). Models whose stress is a function of a total
+  // measure (a strain in material axes, F) start from the one that carries
+  // it; the rate-form models start from the stress itself.
+  Voigt stress{};
 };
 
 }  // namespace flowmpm

@@ -79,7 +79,17 @@ struct Orthotropic {
   // The normal block of the compliance S in material axes (1/Pa).
   static Eigen::Matrix3d compliance(const Parameters& p);
 
-  State initial_state(const ParticleInit& init) const { return {{}, axes_rotation(init.axes_degrees)}; }
+  // The particle's axes, and the strain in material axes that carries its
+  // initial stress, eps_m = S sigma_m (0 without one): the stress it holds
+  // from the first update on.
+  State initial_state(const ParticleInit& init) const {
+    State state{{}, axes_rotation(init.axes_degrees)};
+    const Voigt m = to_material(state.axes.toRotationMatrix(), init.stress);
+    const Eigen::Vector3d n = S_n * Eigen::Vector3d(m[0], m[1], m[2]);
+    const Parameters& p = parameters;
+    state.eps = {n[0], n[1], n[2], m[3] / (2.0 * p.Gyz), m[4] / (2.0 * p.Gxz), m[5] / (2.0 * p.Gxy)};
+    return state;
+  }
 
   double density() const { return parameters.density; }
   const TransportProperties& transport() const { return parameters.transport; }

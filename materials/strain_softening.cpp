@@ -42,11 +42,17 @@ StrainSoftening StrainSoftening::read(ParameterTable& t) {
 
 StrainSoftening::State StrainSoftening::initial_state(const ParticleInit& init) const {
   State s;
+  // The strain that carries the initial stress, C^-1 sigma = ((1 + nu) sigma
+  // - nu tr(sigma) I) / E (0 without one), so that the stress, a function
+  // of the total strain, starts from it.
+  const double E = parameters.youngs_modulus, nu = parameters.poisson_ratio;
+  const double tr = init.stress[0] + init.stress[1] + init.stress[2];
+  for (int i = 0; i < 6; ++i) s.eps[i] = ((1.0 + nu) * init.stress[i] - (i < 3 ? nu * tr : 0.0)) / E;
   if (parameters.failure_strain) {
     s.eps_f = *parameters.failure_strain;
     return s;
   }
-  const double E = parameters.youngs_modulus, eps_i = parameters.initiation_strain;
+  const double eps_i = parameters.initiation_strain;
   const double G_c = *parameters.fracture_energy;
   s.eps_f = init.cell_length > 0.0 ? 2.0 * G_c / (E * eps_i * init.cell_length) : 0.0;
   if (!(s.eps_f > eps_i)) {

@@ -65,9 +65,12 @@ TEST_CASE("Sulsky's two disks collide and part, with linear, uGIMP and B-spline 
   // No closed form for the motion; the energy is conserved in the
   // continuum. Measured (largest |E(t) - E(0)| / E(0) during the run; the
   // disks' closest and final distance; final kinetic energy over E(0)):
-  //   linear   0.073, 0.365 m, 0.726 m, 0.91
-  //   gimp     0.070, 0.365 m, 0.723 m, 0.90
-  //   bspline2 0.083, 0.367 m, 0.713 m, 0.86
+  //   linear   0.083, 0.364 m, 0.724 m, 0.91
+  //   gimp     0.075, 0.364 m, 0.718 m, 0.89
+  //   bspline2 0.086, 0.367 m, 0.712 m, 0.86
+  // (0.073, 0.070, 0.083 before linear_elastic turned its stress with the
+  // spin: a hypoelastic law's stored energy is not exactly its work when
+  // the particles turn, docs/validation/sulsky_disks.md.)
   // Asserted: energy within 10 %; the disks come closer than their
   // diameter 0.4 m (they touch and flatten) and end farther apart than
   // 0.6 m, moving apart with most of their kinetic energy back.
@@ -79,6 +82,18 @@ TEST_CASE("Sulsky's two disks collide and part, with linear, uGIMP and B-spline 
     CHECK(s.measures.at("separation_final") > 0.6);
     CHECK(s.measures.at("kinetic_final") > 0.8);
   }
+}
+
+TEST_CASE("Sulsky's two disks of neo-Hookean material: the energy closes as with linear_elastic") {
+  // The same disks, E, nu and rho, of neo_hookean (uGIMP, FLIP). Measured:
+  // 0.023 (the final loss of the FLIP transfers: the stored energy, exact
+  // for the model, comes back after the contact), 0.367 m, 0.726 m, 0.89.
+  // Asserted as for linear_elastic above.
+  const RunSummary s = run_benchmark("sulsky_disks", {"materials.elastic.type=neo_hookean"});
+  CHECK(s.errors.at("energy") < 0.1);
+  CHECK(s.measures.at("separation_min") < 0.39);
+  CHECK(s.measures.at("separation_final") > 0.6);
+  CHECK(s.measures.at("kinetic_final") > 0.8);
 }
 
 TEST_CASE("plate with a hole: Kirsch's stresses near the hole, a / 4") {

@@ -345,6 +345,16 @@ every = 25
   CHECK(turned > 0.1);
 }
 
+TEST_CASE("neo_hookean: the deformation gradient carries") {
+  // Sulsky's disks of neo-Hookean material, checkpointed during the impact
+  // (t = 1.7 s; they meet near 1.6 s), to 2.2 s; volume_ratio (det F) is
+  // written.
+  TempDir dir("flowmpm_restart");
+  check_restart_matches(dir, config_file("benchmarks/sulsky_disks.toml"), 1700,
+                        {"materials.elastic.type=neo_hookean", "analysis.end_time=2.2", "output.every=100",
+                         "output.fields=[\"position\",\"stress\",\"volume_ratio\"]"});
+}
+
 TEST_CASE("linear shape functions: a reference's error sums, and reactions, carry") {
   TempDir dir("flowmpm_restart");
   // The vibrating bar with its axial_vibration reference (error columns).
