@@ -227,4 +227,18 @@ struct DiscreteSystem : SystemScalars {
   }
 };
 
+// Calls f.template operator()<Hoop>() once, Hoop true where the analysis is
+// axisymmetric (2D only): the particle passes' hoop terms, compiled in only
+// where they can run.
+template <int D, class Shape, class F>
+void with_hoop(const DiscreteSystem<D, Shape>& system, F&& f) {
+  if constexpr (D == 2) {
+    if (system.stress_state == StressState::axisymmetric) {
+      f.template operator()<true>();
+      return;
+    }
+  }
+  f.template operator()<false>();
+}
+
 }  // namespace flowmpm

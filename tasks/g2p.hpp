@@ -292,6 +292,11 @@ void g2p(DiscreteSystem<D, Shape>& system) {
         s.for_each_node_pair([&]<int Count>(int line, int k, std::size_t n) {
           const auto w = s.template pair_weights<Count>(line, k);
           const NodePair N = w.N;
+          // APIC's affine weights G_Ip on these nodes.
+          [[maybe_unused]] const auto G = [&] {
+            if constexpr (!apic || affine_is_gradient) return w;
+            else return affine.template pair_weights<Count>(line, k);
+          }();
           for (int i = 0; i < D; ++i) {
             const NodePair v = load_nodes<Count>(velocity[i] + n);
             if constexpr (Motion) {
@@ -306,16 +311,8 @@ void g2p(DiscreteSystem<D, Shape>& system) {
               for (int j = 0; j < D; ++j) L_sum[i][j] += v * w.dN[j];
             if constexpr (Hoop && Stress)
               if (i == 0) hoop_sum += N * v;
-          }
-          if constexpr (apic) {
-            const auto G = [&] {
-              if constexpr (affine_is_gradient) return w;
-              else return affine.template pair_weights<Count>(line, k);
-            }();
-            for (int i = 0; i < D; ++i) {
-              const NodePair v = load_nodes<Count>(velocity[i] + n);
+            if constexpr (apic)
               for (int j = 0; j < D; ++j) C_sum[i][j] += v * G.dN[j];
-            }
           }
         });
         Vec<D> v_grid, dv;
@@ -393,10 +390,6 @@ void g2p(DiscreteSystem<D, Shape>& system) {
   if constexpr (Motion) system.max_speed_sq = max_speed_sq.load();
 }
 
-}  // namespace detail
-
-namespace detail {
-
 // g2p_motion (with g2p_stress under USL) for the scene's velocity update;
 // XPIC's correction first, while the particles are still where the step
 // found them.
@@ -415,20 +408,13 @@ void g2p_with_motion(DiscreteSystem<D, Shape>& system) {
 // The pass, with the hoop rate where the analysis is axisymmetric.
 template <int D, class Shape, bool Motion, bool Stress>
 void g2p_of_state(DiscreteSystem<D, Shape>& system) {
-  auto pass = [&]<bool Hoop>() {
+  with_hoop(system, [&]<bool Hoop>() {
     if constexpr (Motion) {
       g2p_with_motion<D, Shape, Stress, Hoop>(system);
     } else {
       g2p<D, Shape, false, Stress, VelocityUpdate::flip, Hoop>(system);
     }
-  };
-  if constexpr (D == 2) {
-    if (system.stress_state == StressState::axisymmetric) {
-      pass.template operator()<true>();
-      return;
-    }
-  }
-  pass.template operator()<false>();
+  });
 }
 
 }  // namespace detail

@@ -149,7 +149,7 @@ void p2g_with_momentum(DiscreteSystem<D, Shape>& system) {
 // with linear shape functions), and the hoop term in axisymmetric.
 template <int D, class Shape, bool Momentum>
 void p2g_with_force(DiscreteSystem<D, Shape>& system) {
-  auto with_stiffness = [&]<bool Hoop>() {
+  with_hoop(system, [&]<bool Hoop>() {
     constexpr bool jumps = Shape::gradient_jumps;
     if (jumps && !system.grid.stiffness.empty()) {  // every field has it then
       if constexpr (Momentum) p2g_with_momentum<D, Shape, true, jumps, Hoop>(system);
@@ -158,14 +158,7 @@ void p2g_with_force(DiscreteSystem<D, Shape>& system) {
       if constexpr (Momentum) p2g_with_momentum<D, Shape, true, false, Hoop>(system);
       else p2g<D, Shape, false, true, false, false, Hoop>(system);
     }
-  };
-  if constexpr (D == 2) {
-    if (system.stress_state == StressState::axisymmetric) {
-      with_stiffness.template operator()<true>();
-      return;
-    }
-  }
-  with_stiffness.template operator()<false>();
+  });
 }
 
 }  // namespace detail
