@@ -108,73 +108,76 @@ template <int D, class Shape, StressState Kind, bool ExpansionWork, class Materi
   return expansion_work;
 }
 
-// Calls f(update) with update(p, L, hoop) the material update of `b`'s particles:
-// one dispatch on the material, the stress state and whether the batch asks
-// for nonlocal averages per call, none per particle.
-template <int D, class Shape, class F>
+// Calls f(update) with update(p, L, hoop) the update of `b`'s particles by
+// `material`: one dispatch on the stress state and whether the batch asks
+// for nonlocal averages per call, none per particle. `Hoop` (with_hoop):
+// the analysis is axisymmetric, the only 2D stress state compiled with it.
+template <bool Hoop, int D, class Shape, class M, class F>
+void with_material_update(DiscreteSystem<D, Shape>& system, ParticleBatch<D>& b, const M& material, F&& f) {
+  auto& states = std::get<StateArray<M>>(b.states);
+  TransportedInput transported;
+  if (system.heat) {
+    transported.temperature = b.temperature.data();
+    transported.temperature_step = b.temperature_step.data();
+    transported.reference_temperature = material.transport().reference_temperature.value_or(0.0);
+  }
+  if (system.solvent) {
+    transported.concentration = b.concentration.data();
+    transported.concentration_step = b.concentration_step.data();
+  }
+  // The expansion work, for models that can do it; a model that says
+  // it does not expand (expands()) skips it, its update alone as before.
+  auto for_state = [&]<StressState Kind>() {
+    if constexpr (NonlocalModel<M>) {
+      if (!b.nonlocal_others.empty()) {
+        // A nonlocal model has no expansion strains: no expansion work.
+        f([&](std::size_t p, const double(&L)[D][D], double hoop) {
+          return update_particle_stress<D, Shape, Kind, false, M, true>(system, b, p, L, hoop, material, states[p],
+                                                                       transported);
+        });
+        return;
+      }
+    }
+    typename M::State no_state{};
+    auto with_work = [&]<bool Work>() {
+      f([&](std::size_t p, const double(&L)[D][D], double hoop) {
+        return update_particle_stress<D, Shape, Kind, Work>(system, b, p, L, hoop, material,
+                                                            states.empty() ? no_state : states[p], transported);
+      });
+    };
+    constexpr bool can_work = requires(const typename M::State& s, const Voigt& v, const MaterialInput& in) {
+      material.expansion_work(s, v, in);
+    };
+    if constexpr (!can_work) {
+      with_work.template operator()<false>();
+    } else if constexpr (requires { material.expands(); }) {
+      if (material.expands()) {
+        with_work.template operator()<true>();
+      } else {
+        with_work.template operator()<false>();
+      }
+    } else {
+      with_work.template operator()<true>();
+    }
+  };
+  if constexpr (D == 3) {
+    for_state.template operator()<StressState::three_d>();
+  } else if constexpr (D == 1) {
+    for_state.template operator()<StressState::uniaxial_stress>();
+  } else if constexpr (Hoop) {
+    for_state.template operator()<StressState::axisymmetric>();
+  } else if (system.stress_state == StressState::plane_stress) {
+    for_state.template operator()<StressState::plane_stress>();
+  } else {
+    for_state.template operator()<StressState::plane_strain>();
+  }
+}
+
+// The same for the batch's own material: one dispatch on it per call.
+template <bool Hoop, int D, class Shape, class F>
 void with_stress_update(DiscreteSystem<D, Shape>& system, ParticleBatch<D>& b, F&& f) {
-  std::visit(
-      [&](const auto& material) {
-        using M = std::decay_t<decltype(material)>;
-        auto& states = std::get<StateArray<M>>(b.states);
-        TransportedInput transported;
-        if (system.heat) {
-          transported.temperature = b.temperature.data();
-          transported.temperature_step = b.temperature_step.data();
-          transported.reference_temperature = material.transport().reference_temperature.value_or(0.0);
-        }
-        if (system.solvent) {
-          transported.concentration = b.concentration.data();
-          transported.concentration_step = b.concentration_step.data();
-        }
-        // The expansion work, for models that can do it; a model that says
-        // it does not expand (expands()) skips it, its update alone as before.
-        auto for_state = [&]<StressState Kind>() {
-          if constexpr (NonlocalModel<M>) {
-            if (!b.nonlocal_others.empty()) {
-              // A nonlocal model has no expansion strains: no expansion work.
-              f([&](std::size_t p, const double(&L)[D][D], double hoop) {
-                return update_particle_stress<D, Shape, Kind, false, M, true>(system, b, p, L, hoop, material, states[p],
-                                                                             transported);
-              });
-              return;
-            }
-          }
-          typename M::State no_state{};
-          auto with_work = [&]<bool Work>() {
-            f([&](std::size_t p, const double(&L)[D][D], double hoop) {
-              return update_particle_stress<D, Shape, Kind, Work>(system, b, p, L, hoop, material,
-                                                                  states.empty() ? no_state : states[p], transported);
-            });
-          };
-          constexpr bool can_work = requires(const typename M::State& s, const Voigt& v, const MaterialInput& in) {
-            material.expansion_work(s, v, in);
-          };
-          if constexpr (!can_work) {
-            with_work.template operator()<false>();
-          } else if constexpr (requires { material.expands(); }) {
-            if (material.expands()) {
-              with_work.template operator()<true>();
-            } else {
-              with_work.template operator()<false>();
-            }
-          } else {
-            with_work.template operator()<true>();
-          }
-        };
-        if constexpr (D == 3) {
-          for_state.template operator()<StressState::three_d>();
-        } else if constexpr (D == 1) {
-          for_state.template operator()<StressState::uniaxial_stress>();
-        } else if (system.stress_state == StressState::plane_stress) {
-          for_state.template operator()<StressState::plane_stress>();
-        } else if (system.stress_state == StressState::axisymmetric) {
-          for_state.template operator()<StressState::axisymmetric>();
-        } else {
-          for_state.template operator()<StressState::plane_strain>();
-        }
-      },
-      system.materials[b.material]);
+  std::visit([&](const auto& material) { with_material_update<Hoop>(system, b, material, f); },
+             system.materials[b.material]);
 }
 
 // Takes `max` up to `value` (max is exact, so any order gives the same).
@@ -223,13 +226,14 @@ template <int Count>
 
 // One pass over the particles: g2p_motion, g2p_stress, or both (USL), from
 // one stencil per particle at its position at the start of the pass.
-// `Update`: flip for FLIP, PIC and their blend (flip_fraction), apic, xpic.
-// `Hoop`: axisymmetric (the hoop rate, and no particle onto the axis).
-template <int D, class Shape, bool Motion, bool Stress, VelocityUpdate Update = VelocityUpdate::flip,
-          bool Hoop = false>
+// `Apic`: APIC's velocity update; otherwise FLIP, PIC and their blend
+// (flip_fraction), or XPIC's (a branch per particle, not a second copy of
+// the pass and of its material updates). `Hoop`: axisymmetric (the hoop
+// rate, and no particle onto the axis).
+template <int D, class Shape, bool Motion, bool Stress, bool Apic = false, bool Hoop = false>
 void g2p(DiscreteSystem<D, Shape>& system) {
-  constexpr bool apic = Motion && Update == VelocityUpdate::apic;
-  constexpr bool xpic = Motion && Update == VelocityUpdate::xpic;
+  constexpr bool apic = Motion && Apic;
+  const bool xpic = Motion && !Apic && system.velocity_update == VelocityUpdate::xpic;
   // APIC's G_Ip is the gradient itself where the shape function has no D_p.
   constexpr bool affine_is_gradient = Shape::apic_inertia == 0.0;
   // APIC with held nodes (linear shape functions, tasks/grid_update.hpp
@@ -347,8 +351,10 @@ void g2p(DiscreteSystem<D, Shape>& system) {
           }
           if constexpr (Hoop) inside = inside && x_new[0] > 0.0;  // r > 0: off the axis
           Vec<D> v_new;
-          if constexpr (apic || xpic) {
-            v_new = xpic ? Vec<D>(v_grid - dv) : v_grid;
+          if constexpr (apic) {
+            v_new = v_grid;
+          } else if (xpic) {
+            v_new = v_grid - dv;
           } else {
             v_new = a * (b.v[p] + dv) + (1.0 - a) * v_grid;
           }
@@ -374,7 +380,7 @@ void g2p(DiscreteSystem<D, Shape>& system) {
       }
     };
     if constexpr (Stress) {
-      with_stress_update(system, b, particles);
+      with_stress_update<Hoop>(system, b, particles);
     } else {
       particles([](std::size_t, const double(&)[D][D], double) { return 0.0; });
     }
@@ -396,12 +402,12 @@ void g2p(DiscreteSystem<D, Shape>& system) {
 template <int D, class Shape, bool Stress, bool Hoop>
 void g2p_with_motion(DiscreteSystem<D, Shape>& system) {
   switch (system.velocity_update) {
-    case VelocityUpdate::apic: g2p<D, Shape, true, Stress, VelocityUpdate::apic, Hoop>(system); return;
+    case VelocityUpdate::apic: g2p<D, Shape, true, Stress, true, Hoop>(system); return;
     case VelocityUpdate::xpic:
       xpic_correction(system);
-      g2p<D, Shape, true, Stress, VelocityUpdate::xpic, Hoop>(system);
+      g2p<D, Shape, true, Stress, false, Hoop>(system);
       return;
-    default: g2p<D, Shape, true, Stress, VelocityUpdate::flip, Hoop>(system);
+    default: g2p<D, Shape, true, Stress, false, Hoop>(system);
   }
 }
 
@@ -412,7 +418,7 @@ void g2p_of_state(DiscreteSystem<D, Shape>& system) {
     if constexpr (Motion) {
       g2p_with_motion<D, Shape, Stress, Hoop>(system);
     } else {
-      g2p<D, Shape, false, Stress, VelocityUpdate::flip, Hoop>(system);
+      g2p<D, Shape, false, Stress, false, Hoop>(system);
     }
   });
 }

@@ -51,20 +51,22 @@ void nonlocal_settle(DiscreteSystem<D, Shape>& system) {
               auto& states = std::get<StateArray<M>>(b.states);
               const auto& kept = b.step_start;
               const auto& kept_states = std::get<StateArray<M>>(kept.states);
-              detail::with_stress_update(system, b, [&](auto&& update) {
-                for (std::size_t p = 0; p < b.size(); ++p) {
-                  if (!(std::abs(average[bi][p] - b.nonlocal_others[p]) > tolerance)) continue;
-                  b.nonlocal_others[p] = average[bi][p];
-                  if (!model.nonlocal_read(states[p])) continue;  // the same update again: nothing to redo
-                  states[p] = kept_states[p];
-                  b.stress[p] = kept.stress[p];
-                  b.strain[p] = kept.strain[p];
-                  b.volume[p] = kept.volume[p];
-                  double L[D][D];
-                  for (int i = 0; i < D; ++i)
-                    for (int j = 0; j < D; ++j) L[i][j] = kept.L[p][D * i + j];
-                  update(p, L, kept.L[p][D * D]);  // (keeps the same start again)
-                }
+              with_hoop(system, [&]<bool Hoop>() {
+                detail::with_material_update<Hoop>(system, b, model, [&](auto&& update) {
+                  for (std::size_t p = 0; p < b.size(); ++p) {
+                    if (!(std::abs(average[bi][p] - b.nonlocal_others[p]) > tolerance)) continue;
+                    b.nonlocal_others[p] = average[bi][p];
+                    if (!model.nonlocal_read(states[p])) continue;  // the same update again: nothing to redo
+                    states[p] = kept_states[p];
+                    b.stress[p] = kept.stress[p];
+                    b.strain[p] = kept.strain[p];
+                    b.volume[p] = kept.volume[p];
+                    double L[D][D];
+                    for (int i = 0; i < D; ++i)
+                      for (int j = 0; j < D; ++j) L[i][j] = kept.L[p][D * i + j];
+                    update(p, L, kept.L[p][D * D]);  // (keeps the same start again)
+                  }
+                });
               });
             }
           },
