@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Plots an error norm of a sweep against the wall time of its cases:
-#   scripts/plot_sweep.sh SWEEP_DIR ERROR_COLUMN [COLOUR_COLUMN [MARKER_COLUMN [DASH_COLUMN]]]
+#   scripts/plot_sweep.sh [--front COLUMN] SWEEP_DIR ERROR_COLUMN [COLOUR_COLUMN [MARKER_COLUMN [DASH_COLUMN]]]
 # reads SWEEP_DIR/sweep.csv (written by `flowmpm sweep`) and draws, log-log,
 # ERROR_COLUMN against wall_seconds with one line per distinct combination of
 # the grouping columns, its points joined in case order (the order of the
@@ -12,12 +12,21 @@
 # the dash. The legend has one entry per colour and one per marker, not
 # one per line; the title names the sweep (the folder's name) and the
 # error. Only completed cases with a positive error and wall time are
-# drawn. Needs gnuplot (Debian package gnuplot-nox) and python3, both
+# drawn. --front COLUMN adds, per value of COLUMN (e.g.
+# analysis.velocity_update), its Pareto front: the cases of that value that
+# no faster case of it beats in error (the least error each wall time
+# buys), a thick pale line, and prints the front's cases with their
+# particle-steps per second. Needs gnuplot (Debian package gnuplot-nox) and python3, both
 # installed by scripts/setup.sh.
 set -euo pipefail
 
+front=""
+if [[ ${1:-} == --front ]]; then
+  front=${2:?"--front needs a column"}
+  shift 2
+fi
 if (($# < 2)); then
-  echo "usage: $0 SWEEP_DIR ERROR_COLUMN [COLOUR_COLUMN [MARKER_COLUMN [DASH_COLUMN]]]" >&2
+  echo "usage: $0 [--front COLUMN] SWEEP_DIR ERROR_COLUMN [COLOUR_COLUMN [MARKER_COLUMN [DASH_COLUMN]]]" >&2
   exit 1
 fi
 dir=$1
@@ -30,15 +39,16 @@ gnuplot -e "set terminal pngcairo" 2>/dev/null && terminal=pngcairo
 
 # python3 reads the CSV (quoted fields included) and writes the gnuplot
 # script, the data inline as one datablock per line of the plot.
-script=$(python3 - "$csv" "$png" "$terminal" "${@:2}" <<'EOF'
+script=$(python3 - "$csv" "$png" "$terminal" "$front" "${@:2}" <<'EOF'
 import csv, math, os, sys
 
-csv_file, png, terminal, error, groups = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4], sys.argv[5:]
+csv_file, png, terminal, front = sys.argv[1:5]
+error, groups = sys.argv[5], sys.argv[6:]
 with open(csv_file, newline="") as f:
     reader = csv.DictReader(f)
     columns = reader.fieldnames or []
     rows = list(reader)
-for name in ["wall_seconds", error] + groups:
+for name in ["wall_seconds", error] + groups + ([front, "particle_steps_per_second"] if front else []):
     if name not in columns:
         sys.exit(f"plot_sweep: {csv_file} has no column '{name}'; its columns: {', '.join(columns)}")
 
@@ -49,13 +59,15 @@ def positive(text):
         return None
     return value if math.isfinite(value) and value > 0 else None
 
-lines, left_out = {}, 0
+lines, left_out, by_front = {}, 0, {}
 for row in rows:
     x, y = positive(row["wall_seconds"]), positive(row[error])
     if row["status"] != "completed" or x is None or y is None:
         left_out += 1
         continue
     lines.setdefault(tuple(row[g] for g in groups), []).append((int(row["case"]), x, y))
+    if front:
+        by_front.setdefault(row[front], []).append((x, y, row))
 if left_out:
     print(f"plot_sweep: {left_out} of {len(rows)} rows left out (failed, or no positive {error} "
           "and wall_seconds)", file=sys.stderr)
@@ -75,7 +87,8 @@ PALETTE = ["#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e
 MARKERS = {"usf": 7, "usl": 5, "musl": 9}  # filled circle, square, triangle
 MARKER_LIST = [7, 5, 9, 11, 13, 15, 4, 6]
 LABELS = {"linear": "linear", "gimp": "uGIMP", "bspline2": "B-spline 2", "bspline3": "B-spline 3",
-          "usf": "USF", "usl": "USL", "musl": "MUSL", "flip": "FLIP", "pic": "PIC", "blend": "blend"}
+          "usf": "USF", "usl": "USL", "musl": "MUSL", "flip": "FLIP", "pic": "PIC", "blend": "blend",
+          "apic": "APIC", "xpic": "XPIC"}
 NAMES = {"analysis.shape_function": "shape function", "analysis.scheme": "scheme",
          "analysis.velocity_update": "velocity update"}
 
@@ -103,6 +116,25 @@ out = [f"set terminal {terminal} size 1000,650", f"set output {quoted(png)}", "s
        f"set ylabel {quoted('relative RMS error: ' + error)}",
        f"set title {quoted(sweep + ': ' + error + ' error against wall time')}"]
 plots = []
+# Pareto fronts first, under the cases: per value, the cases in order of
+# wall time that lower the least error seen so far.
+FRONT_COLOURS = ["#7f7f7f", "#9467bd", "#8c564b", "#e377c2", "#17becf", "#bcbd22"]
+for j, (value, points) in enumerate(by_front.items()):
+    best, kept = math.inf, []
+    for x, y, row in sorted(points, key=lambda p: p[0]):
+        if y < best:
+            best = y
+            kept.append((x, y, row))
+    print(f"# front {front} = {value}: wall_seconds {error} particle_steps_per_second case", file=sys.stderr)
+    for x, y, row in kept:
+        print(f"#   {x:.4g} {y:.3g} {float(row['particle_steps_per_second']):.3g} "
+              + " ".join(f"{g}={row[g]}" for g in groups + ["grid.cell_size"] if g != front and g in row),
+              file=sys.stderr)
+    out.append(f"$front{j} << EOD")
+    out += [f"{x!r} {y!r}" for x, y, _ in kept]
+    out.append("EOD")
+    plots.append(f"$front{j} using 1:2 with steps linecolor rgb {quoted(FRONT_COLOURS[j % len(FRONT_COLOURS)])} "
+                 f"linewidth 9 title {quoted('front: ' + label(value))}")
 for i, (key, points) in enumerate(lines.items()):
     out.append(f"$line{i} << EOD")
     out += [f"{x!r} {y!r}" for _, x, y in sorted(points)]
