@@ -150,16 +150,17 @@ void log_system(spdlog::logger& log, const Case& c, const Simulation<D, Shape>& 
   }
   const TimeStep& time = c.time_step;
   const StableStep& stable = time.limits().wave;
+  const char* axisymmetric = c.system.axisymmetric ? ", axisymmetric" : "";
   if (time.automatic()) {
     log.info("time: dt automatic, CFL {} of h/c = {:.4g} s (the stable limit is {:.3g} h/c for {} with {} at {:.3g} "
-             "particles per cell), to t = {:.6g} s",
+             "particles per cell{}), to t = {:.6g} s",
              time.cfl(), stable.crossing, stable.factor, scheme.label, Shape::name, stable.particles_per_cell,
-             time.end_time());
+             axisymmetric, time.end_time());
   } else {
     log.info("time: dt = {:.6g} s = {:.3g} h/c ({:.3g} of the stable limit {:.3g} h/c for {} with {} at {:.3g} "
-             "particles per cell), {} steps to t = {:.6g} s",
+             "particles per cell{}), {} steps to t = {:.6g} s",
              time.first_dt(), time.first_dt() / stable.crossing, time.first_dt() / stable.dt(), stable.factor,
-             scheme.label, Shape::name, stable.particles_per_cell, time.fixed_steps(), time.end_time());
+             scheme.label, Shape::name, stable.particles_per_cell, axisymmetric, time.fixed_steps(), time.end_time());
   }
   if (time.limits().diffusion) log.info("time-step limits: {}", time_step_limits(time.limits()));
   if (const auto& bond = time.limits().interface) {

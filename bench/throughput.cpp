@@ -33,10 +33,16 @@
 // program reports per size the rates of the one-body block and of the two
 // bodies in contact, 1 and 2 threads, their ratio, and the peak bytes per
 // particle of each.
+// With --axisymmetric the block is a 2D section, 1 m x 1 m, of cells of
+// 2 x 2 particles on a held base under gravity, run in plane strain and
+// axisymmetric (x the radius from the axis): the program reports per size
+// the rates of both, 1 and 2 threads, and the axisymmetric step's cost
+// over the plane-strain step's (their rates' inverse ratio).
 //
 //   build/bench/bench_throughput [--sizes 1e4,1e5,1e6] [--particle-steps N]
 //                                [--repeats R] [--shape linear|gimp|bspline2|bspline3]
-//                                [--transport heat|both] [--contact] [--transfers] [--csv FILE]
+//                                [--transport heat|both] [--contact] [--transfers] [--axisymmetric]
+//                                [--csv FILE]
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -174,11 +180,11 @@ struct Timing {
   std::int64_t sorts = 0;
 };
 
-template <class Shape>
+template <class Shape, int D = 3>
 Timing time_steps(const SystemSpec& c, int threads, bool serial, int steps, TransportBranch branch) {
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
   const auto t0 = Clock::now();
-  Simulation<3, Shape> sim(c, scheme_named("usl").wiring, c.dt, {}, branch);
+  Simulation<D, Shape> sim(c, scheme_named("usl").wiring, c.dt, {}, branch);
   Timing t;
   t.setup = std::chrono::duration<double>(Clock::now() - t0).count();
   t.particles = sim.system().particle_count();
@@ -210,6 +216,7 @@ double empty_graph_seconds_per_step() {
 struct ShapeRunner {
   Timing (*time_steps)(const SystemSpec&, int threads, bool serial, int steps, TransportBranch branch);
   std::pair<double, double> (*output_cost)(SystemSpec);
+  Timing (*time_steps_2d)(const SystemSpec&, int threads, bool serial, int steps, TransportBranch branch);
 };
 
 ShapeRunner runner_named(const std::string& shape) {
@@ -219,7 +226,9 @@ ShapeRunner runner_named(const std::string& shape) {
     std::exit(1);
   }
   return with_shape_function(shape_function_named(shape),
-                             []<class Shape>() { return ShapeRunner{&time_steps<Shape>, &output_cost<Shape>}; });
+                             []<class Shape>() {
+                               return ShapeRunner{&time_steps<Shape>, &output_cost<Shape>, &time_steps<Shape, 2>};
+                             });
 }
 
 // The transport table: per size, the median rates (2 threads unless
@@ -364,6 +373,77 @@ void transfers_table(const ShapeRunner& runner, const std::vector<double>& sizes
   }
 }
 
+// The section of --axisymmetric: k x k cells of 2 x 2 particles, 1 m x
+// 1 m, on the held plane y = 0 under gravity; axisymmetric, x is the
+// radius and the grid starts on the axis (its node set "axis" holds
+// v_r = 0); plane strain, two cells of grid on each side.
+SystemSpec section_case(std::size_t target_particles, const std::string& shape, bool axisymmetric) {
+  const int k = std::max(2, static_cast<int>(std::lround(std::sqrt(target_particles / 4.0))));
+  const double h = 1.0 / k;
+  SystemSpec c;
+  c.source = "bench_section";
+  c.dimension = 2;
+  c.axisymmetric = axisymmetric;
+  c.shape_function = shape_function_named(shape);
+  c.grid.origin = {axisymmetric ? 0.0 : -2 * h, -2 * h, 0.0};
+  c.grid.cell_size = {h, h, h};
+  c.grid.cells = {k + (axisymmetric ? 2 : 4), k + 5, 1};
+  c.gravity = {0.0, -9.81, 0.0};
+  LinearElastic::Parameters elastic;
+  elastic.density = 1000.0;       // kg/m^3
+  elastic.youngs_modulus = 1e7;   // Pa
+  elastic.poisson_ratio = 0.3;
+  c.materials.push_back({"elastic", LinearElastic(elastic)});
+  BodySpec body;
+  body.name = "section";
+  body.shape = BodyShape{BoxShape{{0.0, 0.0, 0.0}, {1.0, 1.0, 0.0}}};
+  body.spacing = {h / 2, h / 2, h / 2};
+  c.bodies.push_back(body);
+  NodeSetSpec base;
+  base.name = "base";
+  base.axis = 1;
+  base.at = 0.0;
+  for (int d = 0; d < 2; ++d) base.velocity[d] = TimeFunction{{{0.0, 0.0}}};
+  c.node_sets.push_back(base);
+  const StableStep stable = stable_time_step(c, scheme_named("usl"));
+  c.dt = std::min(0.5 * stable.crossing, stable.dt());
+  return c;
+}
+
+// The axisymmetric table: per size, the median rates of the section in
+// plane strain and axisymmetric, 1 and 2 threads, and the axisymmetric
+// step's cost over the plane-strain one's.
+void axisymmetric_table(const ShapeRunner& runner, const std::vector<double>& sizes, double particle_steps,
+                        int repeats, const std::string& shape, std::ofstream& csv) {
+  std::printf("2D elastic section on a fixed base under gravity, USL, %s shape functions: plane strain and"
+              " axisymmetric; medians of %d runs\n", shape.c_str(), repeats);
+  std::printf("%10s %6s %10s %10s %10s %10s %9s %9s\n", "particles", "steps", "plane 1t", "axisym 1t", "plane 2t",
+              "axisym 2t", "cost 1t", "cost 2t");
+  std::printf("%10s %6s %10s %10s %10s %10s %9s %9s\n", "", "", "Mp-st/s", "Mp-st/s", "Mp-st/s", "Mp-st/s", "ax/pl",
+              "ax/pl");
+  if (csv) csv << "particles,steps,rate_plane_1t,rate_axisymmetric_1t,rate_plane_2t,rate_axisymmetric_2t\n";
+  for (double size : sizes) {
+    const SystemSpec plane = section_case(static_cast<std::size_t>(size), shape, false);
+    const SystemSpec axisymmetric = section_case(static_cast<std::size_t>(size), shape, true);
+    const int steps = std::max(5, static_cast<int>(particle_steps / size));
+    std::vector<double> p1, a1, p2, a2;
+    std::size_t n = 0;
+    for (int r = 0; r < repeats; ++r) {
+      const Timing t = runner.time_steps_2d(plane, 1, false, steps, TransportBranch::beside);
+      n = t.particles;
+      p1.push_back(t.rate);
+      a1.push_back(runner.time_steps_2d(axisymmetric, 1, false, steps, TransportBranch::beside).rate);
+      p2.push_back(runner.time_steps_2d(plane, 2, false, steps, TransportBranch::beside).rate);
+      a2.push_back(runner.time_steps_2d(axisymmetric, 2, false, steps, TransportBranch::beside).rate);
+    }
+    const double mp1 = median(p1), ma1 = median(a1), mp2 = median(p2), ma2 = median(a2);
+    std::printf("%10zu %6d %10.2f %10.2f %10.2f %10.2f %9.3f %9.3f\n", n, steps, mp1 / 1e6, ma1 / 1e6, mp2 / 1e6,
+                ma2 / 1e6, mp1 / ma1, mp2 / ma2);
+    std::fflush(stdout);
+    if (csv) csv << n << "," << steps << "," << mp1 << "," << ma1 << "," << mp2 << "," << ma2 << "\n";
+  }
+}
+
 std::vector<double> parse_sizes(const std::string& text) {
   std::vector<double> sizes;
   std::stringstream ss(text);
@@ -378,7 +458,7 @@ int main(int argc, char** argv) {
   double particle_steps = 3e7;  // per measurement, so that each lasts ~1 s or more
   int repeats = 3;
   std::string csv_path, shape = "linear", transport;
-  bool contact = false, transfers = false;
+  bool contact = false, transfers = false, axisymmetric = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto next = [&] {
@@ -395,6 +475,7 @@ int main(int argc, char** argv) {
     else if (a == "--csv") csv_path = next();
     else if (a == "--contact") contact = true;
     else if (a == "--transfers") transfers = true;
+    else if (a == "--axisymmetric") axisymmetric = true;
     else if (a == "--transport") {
       transport = next();
       if (transport != "heat" && transport != "both") {
@@ -404,7 +485,7 @@ int main(int argc, char** argv) {
     }
     else {
       std::cerr << "usage: bench_throughput [--sizes 1e4,1e5,1e6] [--particle-steps 3e7] [--repeats 3] [--shape linear] "
-                   "[--transport heat|both] [--contact] [--transfers] [--csv FILE]\n";
+                   "[--transport heat|both] [--contact] [--transfers] [--axisymmetric] [--csv FILE]\n";
       return a == "--help" ? 0 : 1;
     }
   }
@@ -414,6 +495,12 @@ int main(int argc, char** argv) {
     std::ofstream csv;
     if (!csv_path.empty()) csv.open(csv_path);
     contact_table(runner, sizes, particle_steps, repeats, shape, csv);
+    return 0;
+  }
+  if (axisymmetric) {
+    std::ofstream csv;
+    if (!csv_path.empty()) csv.open(csv_path);
+    axisymmetric_table(runner, sizes, particle_steps, repeats, shape, csv);
     return 0;
   }
   if (transfers) {

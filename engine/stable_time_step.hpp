@@ -3,7 +3,8 @@
 // fastest P wave of the materials, and f the shape function's stable factor
 // for the scheme and the particles per cell (docs/STABILITY.md: a von
 // Neumann analysis of the update, checked on the vibrating bar and the 2D
-// column), taken with a margin of 10 %. With dt = "auto" the particles'
+// column; axisymmetric, a solid section on the axis), taken with a margin
+// of 10 %. With dt = "auto" the particles'
 // speed is added to c_max at every step. When the scene conducts heat or
 // diffuses solvent, the explicit diffusion limit joins it, and an imperfect
 // interface's springs join the wave limit (TimeStepLimit).
@@ -54,6 +55,10 @@ inline StableStep stable_time_step(const SystemSpec& spec, const Scheme& scheme)
   }
   const int i = std::clamp(static_cast<int>(std::ceil(s.particles_per_cell - 1e-9)), 1, 4) - 1;
   s.factor = stability_margin * with_shape_function(spec.shape_function, [&]<class Shape>() {
+               if constexpr (requires { Shape::stable_factor_usl_axisymmetric; }) {
+                 if (spec.axisymmetric && scheme.wiring.stress_from_updated_grid())
+                   return Shape::stable_factor_usl_axisymmetric[i];
+               }
                return scheme.wiring.stress_from_updated_grid()
                         ? Shape::stable_factor_usl[i]
                         : Shape::stable_factor_remapped[i];

@@ -16,7 +16,8 @@ TimeStep::TimeStep(const SystemSpec& spec, const Scheme& scheme, const TimeContr
   c_max_ = h_min_ / stable.crossing;
   wave_limit_text_ = readable_text(stable.factor) + " h/c = " + readable_text(stable.dt()) + " s for " +
                      scheme.label + " with " + shape_function_name(spec.shape_function) + " shape functions at " +
-                     readable_text(stable.particles_per_cell) + " particles per cell (h/c = " +
+                     readable_text(stable.particles_per_cell) + " particles per cell" +
+                     (spec.axisymmetric ? ", axisymmetric" : "") + " (h/c = " +
                      readable_text(stable.crossing) + " s: smallest cell over the P-wave speed of material \"" +
                      stable.material + "\")";
   auto fail = [&](std::string key, std::string expected) {

@@ -32,6 +32,11 @@ struct LinearShape {
   // and from velocities mapped from the particles (USF, MUSL).
   static constexpr std::array<double, 4> stable_factor_usl{0.55, 0.55, 0.55, 0.55};
   static constexpr std::array<double, 4> stable_factor_remapped{1.0, 1.0, 1.0, 1.0};
+  // USL in an axisymmetric analysis: lower from 2 particles per cell on, the
+  // growth starting next to the axis, whose nodes weigh little (masses go
+  // as r); measured on a solid section on the axis (docs/STABILITY.md).
+  // The other shape functions, and USF and MUSL, keep their limits there.
+  static constexpr std::array<double, 4> stable_factor_usl_axisymmetric{0.55, 0.39, 0.335, 0.31};
 
   // 1D stencil for a particle at grid coordinate g = (x - origin) / h with
   // half-width l_p / h (unused here): first node `base`, weights w and
