@@ -60,7 +60,7 @@ struct LinearElastic {
   // th the expansion increment.
   template <StressState Kind>
   void update(State&, Voigt& sigma, Voigt& deps, const MaterialInput& in) const {
-    if constexpr (Kind != StressState::uniaxial_stress) rotate_with_spin(sigma, in.dL);
+    rotate_with_spin<Kind>(sigma, in.dL);
     if (!parameters.expansion.any()) return elastic_update<Kind>(sigma, deps);
     // The update sees the mechanical increment d eps - th I; the total is restored after.
     const double th = parameters.expansion.isotropic_step(in);

@@ -191,7 +191,7 @@ struct StrainSoftening {
       e[1] = e[2] = -nu * e[0];
       eps_b = std::abs(e[0]);
     } else {
-      rotate_with_spin(e, in.dL);
+      rotate_with_spin<Kind>(e, in.dL);
       if constexpr (Kind == StressState::plane_stress) {
         const double e_zz = -lambda / (lambda + 2.0 * mu) * (e[0] + deps[0] + e[1] + deps[1]);
         deps[2] = e_zz - e[2];

@@ -202,7 +202,7 @@ struct VonMises {
       deps[1] = deps[2] = -nu * (deps[0] - sign * dep) - 0.5 * sign * dep;
       state.eps_p += dep;
     } else {
-      rotate_with_spin(sigma, in.dL);
+      rotate_with_spin<Kind>(sigma, in.dL);
       if constexpr (Kind == StressState::plane_stress) {
         deps[2] = -lambda / (lambda + 2.0 * mu) * (deps[0] + deps[1]);
       }
