@@ -124,10 +124,12 @@ TEST_CASE("axisymmetric: bad input names the file, the key and what was expected
 namespace {
 
 // Steps a case to its end in this process and calls check(system) on its
-// particles, which the closed forms below are compared with one by one.
+// particles (their initial positions x0 kept), which the closed forms
+// below are compared with one by one.
 template <class Shape = LinearShape, class Check>
 void at_end(const std::string& config, const std::vector<std::string>& overrides, Check&& check) {
-  const Case c = read_case(testing::config(config), overrides);
+  Case c = read_case(testing::config(config), overrides);
+  c.system.keep_initial_positions = true;
   auto sim = testing::simulation<2, Shape>(c);
   for (std::int64_t s = 0; s < c.time_control.steps; ++s) sim.advance();
   check(sim.system());
@@ -245,5 +247,104 @@ TEST_CASE("axisymmetric radial conduction in a long cylinder: the Bessel series,
     const double rate = std::log2(errors[i] / errors[i + 1]);
     MESSAGE("rate " << rate);
     CHECK(rate > 1.9);
+  }
+}
+
+namespace {
+
+// The strand of configs/axisymmetric/strand_swelling*.toml: transversely
+// isotropic, [Le 2010]'s hybrid poplar constants averaged over R and T.
+constexpr double EA = 9936e6, ET = 670e6, nuAT = 0.35, nuT = 0.70, beta_L = 0.005, beta_T = 0.215;
+
+// The strand with its grain along the hoop direction, held along z
+// (eps_zz = 0), swelling by th = (beta_T, beta_T, beta_L) c in (r, z,
+// theta): a cylindrically anisotropic cylinder ([Lekhnitskii 1981]). With C
+// the stiffness in (r, z, theta), u = A r^k + D r solves the equilibrium
+// C_rr (u'' + u' / r) - C_tt u / r^2 = (C_r - C_t) . th / r, k^2 = C_tt / C_rr
+// (regular on the axis), D = (C_r - C_t) . th / (C_rr - C_tt), and A makes
+// sigma_rr(b) = 0.
+struct HoopSwelling {
+  Eigen::Matrix3d C;
+  Eigen::Vector3d th;
+  double b, k, D, A;
+
+  HoopSwelling(double c, double radius) : b(radius) {
+    Eigen::Matrix3d S;
+    S << 1 / ET, -nuT / ET, -nuAT / EA, -nuT / ET, 1 / ET, -nuAT / EA, -nuAT / EA, -nuAT / EA, 1 / EA;
+    C = S.inverse();
+    th = Eigen::Vector3d(beta_T, beta_T, beta_L) * c;
+    k = std::sqrt(C(2, 2) / C(0, 0));
+    D = (C.row(0) - C.row(2)).dot(th) / (C(0, 0) - C(2, 2));
+    const double sigma_D = C.row(0).dot(Eigen::Vector3d(D, 0, D) - th);
+    A = -sigma_D / (std::pow(b, k - 1) * (C(0, 0) * k + C(0, 2)));
+  }
+  // (sigma_rr, sigma_zz, sigma_tt) at r.
+  Eigen::Vector3d stress(double r) const {
+    const double q = A * std::pow(r, k - 1);
+    return C * (Eigen::Vector3d(q * k + D, 0, q + D) - th);
+  }
+};
+
+}  // namespace
+
+TEST_CASE("axisymmetric poplar strand swelling: free with the grain along z; stressed with it along theta") {
+  {
+    // configs/axisymmetric/strand_swelling.toml: the grain along the axis,
+    // free: sigma = 0, eps_rr = eps_tt = beta_T c, eps_zz = beta_L c, c = 0.04.
+    // Measured: every particle's stress within 768 Pa (1.3e-4 of
+    // ET beta_T c = 5.76 MPa), strains within 5.7e-7 (6.6e-5 of beta_T c):
+    // as for the heated cylinder, the self-equilibrated stress the ramp's
+    // waves leave in the cells' null space once the damping has settled.
+    // Asserted within 5e-4 and 2e-4.
+    const double c = 0.04;
+    Deviation d;
+    at_end("axisymmetric/strand_swelling.toml", {}, [&](const auto& system) {
+      d = deviation(system, {}, {beta_T * c, beta_L * c, beta_T * c, 0, 0, 0});
+    });
+    MESSAGE("free strand: stress within " << d.stress << " Pa, strain within " << d.strain);
+    CHECK(d.stress < 5e-4 * ET * beta_T * c);
+    CHECK(d.strain < 2e-4 * beta_T * c);
+  }
+  // configs/axisymmetric/strand_swelling_hoop.toml (quadratic B-splines) at
+  // 8, 16 and 32 cells over the radius, c = 0.004 (strains below 1e-3, so
+  // that the small-strain closed form holds to about 1e-3): RMS over the
+  // particles (per radian) of each stress component's error, relative to
+  // the largest closed-form stress (sigma_tt(b) = 3.79 MPa). Measured:
+  // rr 6.9e-3, 2.4e-3, 8.1e-4; zz 4.9e-3, 1.7e-3, 5.8e-4 (rate 1.5, as the
+  // thick cylinder's); tt 4.9e-3, 2.1e-3, 9.6e-4 (rate 1.2: the particles of
+  // the cell at the axis keep a hoop error of 3.5, 2.8, 2.6 %, the B-spline
+  // weights next to the axis of [Nairn 2015] not being done). Asserted:
+  // below 1e-2 at 8 cells, rates above 1.3 (rr, zz) and 1.0 (tt).
+  const HoopSwelling exact(0.004, 1e-3);
+  const double scale = std::abs(exact.stress(1e-3)[2]);
+  std::vector<std::array<double, 3>> errors;
+  for (int n : {8, 16, 32}) {
+    const double h = 1e-3 / n;
+    std::array<double, 3> sums{}, rms{};
+    double mass = 0.0;
+    at_end<QuadraticBSpline>(
+        "axisymmetric/strand_swelling_hoop.toml",
+        {"grid.cell_size=" + text(h), "grid.origin=[" + text(-h) + ", " + text(-h) + "]",
+         "grid.cells=[" + std::to_string(n + 3) + ", 4]", "bodies[0].max=[1e-3, " + text(2 * h) + "]",
+         "node_sets[1].at=" + text(2 * h), "analysis.dt=" + text(8e-8 / n)},
+        [&](const auto& system) {
+          for (const auto& b : system.batches) {
+            for (std::size_t p = 0; p < b.size(); ++p) {
+              const Eigen::Vector3d s = exact.stress(b.x0[p][0]);
+              for (int i = 0; i < 3; ++i) sums[i] += b.mass[p] * std::pow(b.stress[p][i] - s[i], 2);
+              mass += b.mass[p];
+            }
+          }
+        });
+    for (int i = 0; i < 3; ++i) rms[i] = std::sqrt(sums[i] / mass) / scale;
+    MESSAGE(n << " cells: stress error rr " << rms[0] << ", zz " << rms[1] << ", tt " << rms[2]);
+    errors.push_back(rms);
+  }
+  for (int i = 0; i < 3; ++i) {
+    CAPTURE(i);
+    CHECK(errors[0][i] < 1e-2);
+    const double rate = std::log2(errors[0][i] / errors[2][i]) / 2.0;
+    MESSAGE("rate " << rate);
+    CHECK(rate > (i == 2 ? 1.0 : 1.3));
   }
 }
