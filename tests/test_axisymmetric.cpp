@@ -21,11 +21,14 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <fstream>
 #include <iomanip>
+#include <numbers>
 #include <sstream>
 
 #include "app/run_case.hpp"
 #include "discretisation/shapes/shape_functions.hpp"
+#include "run_program.hpp"
 #include "test_helpers.hpp"
 #include "verification/cylinder_series.hpp"
 
@@ -119,6 +122,11 @@ TEST_CASE("axisymmetric: bad input names the file, the key and what was expected
             .find("bodies[0].angular_velocity: expected no angular_velocity in axisymmetric") != std::string::npos);
   CHECK(rejection(config, {"node_sets[0].name=\"axis\""})
             .find("that name is the axis's") != std::string::npos);
+  // The message names the node set's key, not grid.origin.
+  CHECK(rejection(config, {"node_sets[1].name=\"axis\""})
+            .find("node_sets[1].name: expected a name other than \"axis\" where the grid reaches r = 0") !=
+        std::string::npos);
+  CHECK(rejection(config, {"node_sets[1].name=\"axis\""}).find("grid.origin") == std::string::npos);
 }
 
 namespace {
@@ -389,4 +397,47 @@ TEST_CASE("axisymmetric Taylor bar: the 3D quarter bar's final length, foot and 
   CHECK(growth == doctest::Approx(growth3d).epsilon(0.02));
   CHECK(s.measures.at("plastic_work") == doctest::Approx(plastic3d).epsilon(0.02));
   CHECK(s.errors.at("energy") < 0.04);  // as the 3D bar's (tests/test_benchmarks.cpp): 2.3 % measured
+}
+
+TEST_CASE("axisymmetric timeseries.csv: stress and strain as rr zz tt, reactions per radian and over the full turn") {
+  // The uniaxial cylinder (Case III) written out: its columns carry the
+  // names results.h5 gives the components (rr zz tt zt rt rz in Voigt
+  // order), and each reaction (N per radian) comes again over the full
+  // turn, 2 pi times. The top's at 0.1 s is sigma_zz pi b^2 = -pi N over
+  // the full turn (-1 Pa on the top face of radius 1 m), within 1.1 % as
+  // the 3D block's top (tests/test_reactions.cpp: a step of load behind).
+  testing::TempDir dir("flowmpm_axisymmetric_csv");
+  Case c = read_case(testing::config("axisymmetric/uniaxial_cylinder.toml"));
+  c.output.directory = dir.path;
+  REQUIRE(testing::run(c, true).status == RunStatus::completed);
+  std::ifstream in(dir.path / "timeseries.csv");
+  std::string header_line, line, last;
+  REQUIRE(std::getline(in, header_line));
+  while (std::getline(in, line)) last = line;
+  auto split = [](const std::string& text) {
+    std::vector<std::string> cells;
+    std::istringstream s(text);
+    for (std::string cell; std::getline(s, cell, ',');) cells.push_back(cell);
+    return cells;
+  };
+  const std::vector<std::string> header = split(header_line), row = split(last);
+  REQUIRE(row.size() == header.size());
+  auto column = [&](const std::string& name) -> double {
+    const auto at = std::ranges::find(header, name);
+    REQUIRE_MESSAGE(at != header.end(), name);
+    return std::stod(row[static_cast<std::size_t>(at - header.begin())]);
+  };
+  std::size_t k = 10;  // after step, time, the energy terms and the balance's error
+  for (const char* quantity : {"stress_", "strain_"})
+    for (const char* component : {"rr", "zz", "tt", "zt", "rt", "rz"})
+      CHECK(header.at(k++) == std::string("cylinder.") + quantity + component);
+  CHECK(header_line.find("stress_xx") == std::string::npos);
+  CHECK(column("cylinder.stress_zz") == doctest::Approx(-1.0).epsilon(5e-4));
+  for (const std::string set : {"axis.x", "bottom.y", "top.y"}) {
+    CAPTURE(set);
+    CHECK(column("reaction." + set + ".full_turn") == 2.0 * std::numbers::pi * column("reaction." + set));
+  }
+  const double top = column("reaction.top.y.full_turn");
+  MESSAGE("top reaction over the full turn " << top << " N (per radian " << column("reaction.top.y") << " N)");
+  CHECK(top == doctest::Approx(-std::numbers::pi).epsilon(0.011));
 }
