@@ -16,8 +16,15 @@
 //    asserted below 2e-3 / 1.5e-3 at 8 cells (the plane-strain benchmark at
 //    8 cells: 2.8 % / 3.3 %, its staircase surface) and a rate above 1.3
 //    (measured 1.5 radial, 1.5-1.7 hoop).
+//  - A solid cylinder heated uniformly, free and held on r = b (free along
+//    z, and plane strain); radial conduction in a long cylinder against the
+//    Bessel series; a round poplar strand swelling, its grain along z (free)
+//    and along theta (the cylindrically anisotropic closed form); the Taylor
+//    bar against its 3D run; timeseries.csv's columns (rr zz tt, reactions
+//    over the full turn). Each test states its measured values and why its
+//    tolerance is what it is (docs/validation/axisymmetric.md).
 //  - Bad input: a body at r <= 0, the axis between node lines, a node set
-//    named "axis", angular_velocity.
+//    named "axis" (the message names node_sets[k].name), angular_velocity.
 #include <doctest/doctest.h>
 
 #include <cmath>
