@@ -15,7 +15,9 @@ ResultsWriter::ResultsWriter(const Case& c, const RunOptions& options, const Sim
       every_(c.output.every > 0 ? c.output.every : std::max<std::int64_t>(1, planned_steps / 20)),
       body_count_(c.system.bodies.size()),
       reactions_(reaction_names(sim.diagnostics(c.system.bodies.size()))),
-      error_names_(std::move(error_names)) {
+      error_names_(std::move(error_names)),
+      components_(sim.stress_state() == StressState::axisymmetric ? axisymmetric_component_names
+                                                                    : voigt_component_names) {
   for (const auto& b : c.system.bodies) body_names_.push_back(b.name);
 }
 
@@ -30,7 +32,7 @@ void ResultsWriter::check_continuation(const SimulationBase& sim) const {
   const auto [h5_from, csv_from] = continuation(sim);
   const auto& dir = case_.output.directory;
   ResultsH5::check_continuation(dir / "results.h5", h5_from);
-  TimeseriesCsv::kept_text(dir / "timeseries.csv", body_names_, reactions_, error_names_, csv_from);
+  TimeseriesCsv::kept_text(dir / "timeseries.csv", body_names_, reactions_, error_names_, csv_from, components_);
 }
 
 void ResultsWriter::open(const SimulationBase& sim, bool restart) {
@@ -43,10 +45,10 @@ void ResultsWriter::open(const SimulationBase& sim, bool restart) {
   if (restart) {
     const auto [h5_from, csv_from] = continuation(sim);
     h5_.emplace(dir / "results.h5", metadata, h5_from);
-    csv_.emplace(dir / "timeseries.csv", body_names_, reactions_, error_names_, csv_from);
+    csv_.emplace(dir / "timeseries.csv", body_names_, reactions_, error_names_, csv_from, components_);
   } else {
     h5_.emplace(dir / "results.h5", metadata);
-    csv_.emplace(dir / "timeseries.csv", body_names_, reactions_, error_names_);
+    csv_.emplace(dir / "timeseries.csv", body_names_, reactions_, error_names_, components_);
   }
   index_.emplace(dir / "results.xdmf");
   if (restart) index_->finish(*h5_);  // without the steps written after the checkpoint

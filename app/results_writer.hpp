@@ -58,6 +58,7 @@ class ResultsWriter {
   std::int64_t every_;
   std::size_t body_count_;
   std::vector<std::string> body_names_, reactions_, error_names_;
+  TensorComponentNames components_;  // timeseries.csv's names of the stress and strain components
   std::int64_t output_steps_ = 0, last_written_ = -1;
   std::optional<ResultsH5> h5_;
   std::optional<ResultsIndex> index_;

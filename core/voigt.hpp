@@ -8,7 +8,11 @@ namespace flowmpm {
 using Voigt = std::array<double, 6>;
 
 // The component names, in Voigt order.
-inline constexpr std::array<const char*, 6> voigt_component_names = {"xx", "yy", "zz", "yz", "xz", "xy"};
+using TensorComponentNames = std::array<const char*, 6>;
+inline constexpr TensorComponentNames voigt_component_names = {"xx", "yy", "zz", "yz", "xz", "xy"};
+// The same in axisymmetric analysis (x the radius r, y the axial z, z the
+// hoop direction theta), as results.h5 lists them (rr zz tt rz zt rt).
+inline constexpr TensorComponentNames axisymmetric_component_names = {"rr", "zz", "tt", "zt", "rt", "rz"};
 
 // The order a symmetric tensor's six values are listed in outside the
 // engine (case keys, particle files, results.h5): xx, yy, zz, xy, yz, xz,

@@ -5,6 +5,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <numbers>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -22,11 +23,12 @@ struct BodyMeans {
 // velocity constraint applied on the body along one axis in the last step
 // (NodeConstraint::reaction; "reaction.<set>.<axis>"), and in a contact
 // scene the contact forces and work (tasks/contact.hpp; `axis` -1 and
-// `name` the whole column name).
+// `name` the whole column name); in axisymmetric analysis each force again
+// over the full turn ("<column>.full_turn", 2 pi times the per-radian value).
 struct Reaction {
   std::string name;
   int axis = 0;
-  double value = 0.0;  // N (N/m in 2D, N/m^2 in 1D), or J for a work
+  double value = 0.0;  // N (N/m in 2D, N/m^2 in 1D, N per radian in axisymmetric), or J for a work
 
   std::string column() const { return axis < 0 ? name : "reaction." + name + "." + "xyz"[axis]; }
 };
@@ -109,6 +111,17 @@ Diagnostics diagnostics(const DiscreteSystem<D, Shape>& system, std::size_t body
       row.reactions.push_back({"rigid." + r.name + ".work", -1, r.work});
     }
     row.reactions.push_back({"contact_work", -1, system.work.contact});
+  }
+  if (system.stress_state == StressState::axisymmetric) {
+    // The forces above act on a one-radian wedge; each again over the full
+    // turn, 2 pi times (N): "<column>.full_turn".
+    const std::size_t per_radian = row.reactions.size();
+    for (std::size_t i = 0; i < per_radian; ++i) {
+      const Reaction r = row.reactions[i];  // a copy: the vector grows below
+      const std::string column = r.column();
+      if (r.axis >= 0 || column.ends_with(".normal") || column.ends_with(".tangential"))
+        row.reactions.push_back({column + ".full_turn", -1, 2.0 * std::numbers::pi * r.value});
+    }
   }
   for (std::size_t i = 0; i < body_count; ++i) {
     for (int k = 0; k < 6; ++k) {

@@ -17,6 +17,7 @@
 #include "verification/axial_vibration.hpp"
 #include "verification/cantilever.hpp"
 #include "verification/column_self_weight.hpp"
+#include "verification/cylinder_transport.hpp"
 #include "verification/elastic_impact.hpp"
 #include "verification/elastic_wave.hpp"
 #include "verification/incline.hpp"
@@ -38,7 +39,8 @@ namespace flowmpm {
 using ReferenceSolution =
     std::variant<AxialVibration, ElasticWave, UniaxialStress, ColumnSelfWeight, SlabTransport, ThermalStress,
                  SwellingSlab, SwellingBending, UniformStressReference, PlateWithHole, ThickCylinder, Cantilever,
-                 ElasticImpact, TaylorImpact, Incline, PrandtlPunch, LapShear, RigidRotation>;
+                 ElasticImpact, TaylorImpact, Incline, PrandtlPunch, LapShear, RigidRotation,
+                 CylinderTransport>;
 using ReferenceSolutions = Registry<ReferenceSolution>;
 
 class Reference {

@@ -66,11 +66,11 @@ Case read_case(const std::filesystem::path& file, const std::vector<std::string>
   for (TableReader& group : t.tables("contact_groups")) read_contact_group(group, c.system);
   for (TableReader& contact : t.tables("contacts")) read_contact(contact, c.system);
   check_rigid_bodies(t, c.system);
-  const auto node_sets = t.tables("node_sets");
+  auto node_sets = t.tables("node_sets");
   for (std::size_t i = 0; i < node_sets.size(); ++i) read_node_set(node_sets[i], c.system, i);
   if (c.system.axisymmetric) {
     TableReader grid = t.table("grid");
-    add_axis_node_set(grid, c.system);
+    add_axis_node_set(grid, node_sets, c.system);
   }
   const auto fluxes = t.tables("surface_fluxes");
   for (std::size_t i = 0; i < fluxes.size(); ++i) read_surface_flux(fluxes[i], c.system, i);

@@ -59,8 +59,10 @@ void check_rigid_bodies(TableReader& root, const SystemSpec& c);
 void read_node_set(TableReader t, SystemSpec& c, std::size_t index);
 // Axisymmetric: the node set "axis" holding the radial velocity at 0 on
 // r = 0, where the grid reaches the axis (`grid` names grid.origin when
-// the axis falls between node lines).
-void add_axis_node_set(TableReader& grid, SystemSpec& c);
+// the axis falls between node lines; `node_sets`, the [[node_sets]] tables
+// read into c.node_sets, name node_sets[k].name when the case's own set k
+// is named "axis").
+void add_axis_node_set(TableReader& grid, std::vector<TableReader>& node_sets, SystemSpec& c);
 // [[surface_fluxes]] k: a heat or solvent flux through a body's face.
 void read_surface_flux(TableReader t, SystemSpec& c, std::size_t index);
 // [[loads]]: tractions, pressures, nodal and body forces (each its own type).

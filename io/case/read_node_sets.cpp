@@ -81,16 +81,16 @@ void read_node_set(TableReader t, SystemSpec& c, std::size_t index) {
   c.node_sets.push_back(s);
 }
 
-void add_axis_node_set(TableReader& grid, SystemSpec& c) {
+void add_axis_node_set(TableReader& grid, std::vector<TableReader>& node_sets, SystemSpec& c) {
   const double origin = c.grid.origin[0], h = c.grid.cell_size[0];
   if (origin > 0.0) return;  // the grid does not reach the axis (a hollow body)
   const double cell = -origin / h;
   grid.require(std::abs(cell - std::round(cell)) <= 1e-6, "origin",
                "the axis r = 0 on a plane of grid nodes in axisymmetric (origin x = -k * cell_size, k >= 0)");
-  for (const NodeSetSpec& s : c.node_sets) {
-    if (s.name == "axis") {
-      grid.fail("origin", "a grid that reaches r = 0 where no node set is named \"axis\" (axisymmetric: that "
-                          "name is the axis's, which holds the radial velocity at 0)");
+  for (std::size_t i = 0; i < c.node_sets.size(); ++i) {
+    if (c.node_sets[i].name == "axis") {
+      node_sets.at(i).fail("name", "a name other than \"axis\" where the grid reaches r = 0 in axisymmetric "
+                                   "(that name is the axis's, which holds the radial velocity at 0)");
     }
   }
   // Symmetry about the axis: v_r = 0 on it; the shape functions that reach

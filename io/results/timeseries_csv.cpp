@@ -23,13 +23,13 @@ namespace {
 }
 
 std::string header_of(const std::vector<std::string>& body_names, const std::vector<std::string>& reactions,
-                      const std::vector<std::string>& error_names) {
+                      const std::vector<std::string>& error_names, const TensorComponentNames& components) {
   std::string header =
       "step,time,kinetic_energy,stored_energy,dissipated_energy,gravity_work,boundary_work,expansion_work,load_work,"
       "energy_balance_error";
   for (const std::string& name : body_names)
     for (const char* quantity : {".stress_", ".strain_"})
-      for (const char* component : voigt_component_names)
+      for (const char* component : components)
         header += "," + csv_field(name + quantity + component);
   for (const std::string& name : reactions) header += "," + csv_field(name);
   for (const std::string& name : error_names) header += "," + csv_field("error." + name);
@@ -40,13 +40,14 @@ std::string header_of(const std::vector<std::string>& body_names, const std::vec
 
 std::string TimeseriesCsv::kept_text(const std::filesystem::path& path, const std::vector<std::string>& body_names,
                                      const std::vector<std::string>& reactions,
-                                     const std::vector<std::string>& error_names, const Continuation& from) {
+                                     const std::vector<std::string>& error_names, const Continuation& from,
+                                     const TensorComponentNames& components) {
   const auto lacks = [&](const std::string& what) {
     throw std::runtime_error(path.string() + ": " + what + ", so the run cannot continue from the checkpoint");
   };
   std::ifstream in(path, std::ios::binary);
   if (!in.is_open()) lacks("not found");
-  const std::string header = header_of(body_names, reactions, error_names);
+  const std::string header = header_of(body_names, reactions, error_names, components);
   std::string line;
   if (!std::getline(in, line) || line + '\n' != header) lacks("its header is not the one this case writes");
   std::string kept = header;
@@ -69,12 +70,12 @@ std::string TimeseriesCsv::kept_text(const std::filesystem::path& path, const st
 
 TimeseriesCsv::TimeseriesCsv(const std::filesystem::path& path, const std::vector<std::string>& body_names,
                              const std::vector<std::string>& reactions, const std::vector<std::string>& error_names,
-                             const Continuation& from)
+                             const Continuation& from, const TensorComponentNames& components)
     : body_count_(body_names.size()),
       reaction_count_(reactions.size()),
       error_count_(error_names.size()),
       path_(path.string()) {
-  write_file_atomically(path, kept_text(path, body_names, reactions, error_names, from));
+  write_file_atomically(path, kept_text(path, body_names, reactions, error_names, from, components));
   errno = 0;
   out_.open(path, std::ios::out | std::ios::app);
   if (!out_) fail("cannot open", path_);
@@ -87,7 +88,8 @@ std::vector<std::string> reaction_names(const Diagnostics& row) {
 }
 
 TimeseriesCsv::TimeseriesCsv(const std::filesystem::path& path, const std::vector<std::string>& body_names,
-                             const std::vector<std::string>& reactions, const std::vector<std::string>& error_names)
+                             const std::vector<std::string>& reactions, const std::vector<std::string>& error_names,
+                             const TensorComponentNames& components)
     : body_count_(body_names.size()),
       reaction_count_(reactions.size()),
       error_count_(error_names.size()),
@@ -95,7 +97,7 @@ TimeseriesCsv::TimeseriesCsv(const std::filesystem::path& path, const std::vecto
   errno = 0;
   out_.open(path, std::ios::out | std::ios::trunc);
   if (!out_) fail("cannot open", path_);
-  const std::string header = header_of(body_names, reactions, error_names);
+  const std::string header = header_of(body_names, reactions, error_names, components);
   errno = 0;
   if (!out_.write(header.data(), static_cast<std::streamsize>(header.size())).flush())
     fail("cannot write", path_);
