@@ -24,7 +24,8 @@
 //    over the full turn). Each test states its measured values and why its
 //    tolerance is what it is (docs/validation/axisymmetric.md).
 //  - Bad input: a body at r <= 0, the axis between node lines, a node set
-//    named "axis" (the message names node_sets[k].name), angular_velocity.
+//    named "axis" (the message names node_sets[k].name), angular_velocity,
+//    material axes turned out of the (r, z) section.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -134,6 +135,12 @@ TEST_CASE("axisymmetric: bad input names the file, the key and what was expected
             .find("node_sets[1].name: expected a name other than \"axis\" where the grid reaches r = 0") !=
         std::string::npos);
   CHECK(rejection(config, {"node_sets[1].name=\"axis\""}).find("grid.origin") == std::string::npos);
+  // Material axes turned out of the (r, z) section (about r or z: r-theta
+  // and z-theta shear) are refused; one angle about theta is taken.
+  CHECK(rejection(config, {"bodies[0].material_axes=[10.0, 20.0, 0.0]"})
+            .find("bodies[0].material_axes: expected one angle in degrees, the turn of the material axes in the "
+                  "(r, z) section about the hoop direction theta") != std::string::npos);
+  CHECK(rejection(config, {"bodies[0].material_axes=[10.0]"}).empty());
 }
 
 namespace {

@@ -148,6 +148,17 @@ void read_body(TableReader t, SystemSpec& c, std::size_t index, const std::files
     t.require(c.dimension > 1, "material_axes", "no material axes in 1D");
     t.require(!file_axes, "material_axes", "no material_axes where the particle file gives them per particle");
     // 2D: one angle about z; 3D: angles about z, y and x (R = Rz Ry Rx).
+    // Axisymmetric: about the hoop direction theta only; a turn about r or
+    // z would couple theta with the section (shear r-theta, z-theta), which
+    // a body of revolution cannot carry.
+    if (c.axisymmetric) {
+      const toml::node* angles = t.node("material_axes");
+      const toml::array* list = angles ? angles->as_array() : nullptr;
+      t.require(!list || list->size() == 1, "material_axes",
+                "one angle in degrees, the turn of the material axes in the (r, z) section about the hoop "
+                "direction theta (axisymmetric: a turn out of the section would need r-theta and z-theta shear, "
+                "which a body of revolution cannot carry)");
+    }
     b.material_axes = vector_of(t, "material_axes", c.dimension == 2 ? 1 : 3);
   }
   if (t.has("material_axes_center")) {
