@@ -23,7 +23,8 @@
 //       at the node (the better resolved surface there; n_b = -n_a),
 //   n = -G_b / |G_b|               against a rigid body (its surface is exact),
 // G = sum_p V_p grad N_Ip pointing out of a body at its surface nodes (N_Ip
-// grows as a particle moves towards node I).
+// grows as a particle moves towards node I). Axisymmetric: V_p is the
+// section's area V_p / r_p here, the section's geometry as in plane strain.
 // An interface (contact_law_interface.hpp) changes no velocity here: it is
 // a force, added to the fields' nodal forces before grid_integrate
 // (tasks/contact_bonds.hpp); contact_volumes maps what it needs.
@@ -60,6 +61,7 @@ void contact_volumes(DiscreteSystem<D, Shape>& system) {
       for (auto& s : field.sum) s[n] = 0.0;
     });
   }
+  const bool axisymmetric = system.stress_state == StressState::axisymmetric;
   scatter_by_colour(system, [&](ParticleBatch<D>& b, std::uint32_t first, std::uint32_t last, std::uint32_t) {
     if (b.field == 0) return;
     double* const to_volume = contact.volume[b.field - 1].data();
@@ -73,7 +75,11 @@ void contact_volumes(DiscreteSystem<D, Shape>& system) {
     const auto scatter = [&]<bool Bonded>() {
       for (std::uint32_t p = first; p < last; ++p) {
         const Stencil<D, Shape, true> s(grid, b.x[p], b.half_width);
-        const double V = b.volume[p];
+        // Axisymmetric: the section's area A_p = V_p / r_p, so that the
+        // touch test and the normals see the (r, z) section as plane strain
+        // does (the r weight of V would tilt every normal outwards by
+        // grad r, and leave the nodes near the axis never full).
+        const double V = axisymmetric ? b.volume[p] / b.x[p][0] : b.volume[p];
         std::array<double, Fit::terms> Vq;
         if constexpr (Bonded) {
           Vq = Fit::particle_terms(Vec<D>(b.x[p] - grid.origin), Vec<D>(b.x[p] - b.x0[p]));

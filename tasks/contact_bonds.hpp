@@ -71,8 +71,11 @@ void contact_bonds(DiscreteSystem<D, Shape>& system) {
           NodalField<D>& fb = system.field(b);
           Vec<D> normal;
           if (!(fa.mass[n] > 0.0) || !(fb.mass[n] > 0.0) || !contact.outward_normal(a, b, n, normal)) continue;
-          const double area = std::min(std::abs(contact.gradient(a, n).dot(normal)),
-                                       std::abs(contact.gradient(b, n).dot(normal)));
+          // The interface's area at the node; axisymmetric, per radian: its
+          // length in the section (contact_volumes maps areas there) times r.
+          double area = std::min(std::abs(contact.gradient(a, n).dot(normal)),
+                                 std::abs(contact.gradient(b, n).dot(normal)));
+          if (system.stress_state == StressState::axisymmetric) area *= grid.origin[0] + ijk[0] * grid.h[0];
           Vec<D> node;
           for (int d = 0; d < D; ++d) node[d] = ijk[d] * grid.h[d];
           const auto at_node = [&](int k) {

@@ -489,3 +489,53 @@ TEST_CASE("axisymmetric timeseries.csv: stress and strain as rr zz tt, reactions
   MESSAGE("top reaction over the full turn " << top << " N (per radian " << column("reaction.top.y") << " N)");
   CHECK(top == doctest::Approx(-std::numbers::pi).epsilon(0.011));
 }
+
+TEST_CASE("axisymmetric contact: a rigid circular punch in a von Mises cylinder, Shield's mean pressure") {
+  // configs/axisymmetric/circular_punch.toml: the plane-strain punch of
+  // configs/contact turned about its axis, a punch of radius a = 0.1 m
+  // pressed 18 mm into a perfectly plastic cylinder (uGIMP, 20 mm cells,
+  // frictionless). Its force is per radian, its mean pressure that force
+  // over a^2 / 2. Reference: 5.69 k for a smooth circular punch on a
+  // rigid-plastic half-space ([Shield 1955]), k = sigma_Y / sqrt(3).
+  // Measured: 5.672 k at the end (0.3 % low; 6.03 k at most, at 0.27 s),
+  // the normal force never negative, the energy balance 0.17 J of the
+  // punch's 26.7 J (0.6 %; the plane-strain punch 0.6 % too). Before the
+  // contact geometry took the section's areas (tasks/contact.hpp) the
+  // bodies never touched in this mode: no force at all. Asserted: within
+  // 10 % of Shield's pressure (the plane-strain punch's tolerance), no
+  // pull, the balance within 2 % of the punch's work.
+  testing::TempDir dir("flowmpm_axisymmetric_punch");
+  Case c = read_case(testing::config("axisymmetric/circular_punch.toml"));
+  c.output.directory = dir.path;
+  REQUIRE(testing::run(c, true).status == RunStatus::completed);
+  std::ifstream in(dir.path / "timeseries.csv");
+  std::string header_line, line;
+  REQUIRE(std::getline(in, header_line));
+  auto split = [](const std::string& text) {
+    std::vector<std::string> cells;
+    std::istringstream s(text);
+    for (std::string cell; std::getline(s, cell, ',');) cells.push_back(cell);
+    return cells;
+  };
+  const std::vector<std::string> header = split(header_line);
+  auto index = [&](const std::string& name) {
+    const auto at = std::ranges::find(header, name);
+    REQUIRE_MESSAGE(at != header.end(), name);
+    return static_cast<std::size_t>(at - header.begin());
+  };
+  const std::size_t normal = index("contact.block~punch.normal"), force = index("reaction.punch.y"),
+                    work = index("rigid.punch.work"), balance = index("energy_balance_error");
+  double least_normal = 0.0;
+  std::vector<std::string> row;
+  while (std::getline(in, line)) {
+    row = split(line);
+    least_normal = std::min(least_normal, std::stod(row.at(normal)));
+  }
+  const double a = 0.1, k = 1e5 / std::sqrt(3.0), shield = 5.69 * k;
+  const double pressure = std::abs(std::stod(row.at(force))) / (a * a / 2.0);
+  MESSAGE("circular punch: mean pressure " << pressure / k << " k against Shield's 5.69 k; energy balance "
+                                           << row.at(balance) << " J of " << row.at(work) << " J");
+  CHECK(least_normal >= 0.0);
+  CHECK(std::abs(pressure - shield) < 0.10 * shield);
+  CHECK(std::abs(std::stod(row.at(balance))) < 0.02 * std::stod(row.at(work)));
+}

@@ -408,6 +408,18 @@ TEST_CASE("contact: the contact forces, the rigid body's force and work, and the
                         {"output.every=1000", "analysis.end_time=0.5"});
 }
 
+TEST_CASE("axisymmetric: the hoop terms, the axis, a pressure and heat with its expansion carry") {
+  // Lame's thick cylinder of configs/axisymmetric (a pressure on r-weighted
+  // faces, the hoop force and strain rate) and the heated solid cylinder
+  // (the axis node set, conduction weighted by r, the thermal expansion);
+  // timeseries.csv's columns are labelled rr zz tt and reactions carry
+  // their full-turn column.
+  TempDir lame("flowmpm_restart"), heated("flowmpm_restart");
+  check_restart_matches(lame, config_file("axisymmetric/thick_cylinder.toml"), 1000, {"output.every=250"});
+  CHECK(contains(read_text(lame.path / "restarted" / "timeseries.csv"), ".stress_tt"));
+  check_restart_matches(heated, config_file("axisymmetric/heated_cylinder.toml"), 1000, {"output.every=250"});
+}
+
 TEST_CASE("an imperfect interface: its stored energy and the initial positions it measures from carry") {
   // The lap shear of configs/contact at 0.5 mm cells, checkpointed during
   // the pull: timeseries.csv has the interface's energy (part of the
