@@ -58,6 +58,30 @@ std::string text(double value) {
 }
 
 // The message of the CaseError that reading or building the case throws.
+// A run's timeseries.csv: its header (as written, and split) and rows,
+// each split at the commas.
+struct Timeseries {
+  std::string header_line;
+  std::vector<std::string> header;
+  std::vector<std::vector<std::string>> rows;
+};
+
+Timeseries read_timeseries(const std::filesystem::path& file) {
+  auto split = [](const std::string& text) {
+    std::vector<std::string> cells;
+    std::istringstream s(text);
+    for (std::string cell; std::getline(s, cell, ',');) cells.push_back(cell);
+    return cells;
+  };
+  Timeseries t;
+  std::ifstream in(file);
+  REQUIRE(std::getline(in, t.header_line));
+  t.header = split(t.header_line);
+  for (std::string line; std::getline(in, line);) t.rows.push_back(split(line));
+  REQUIRE(!t.rows.empty());
+  return t;
+}
+
 std::string rejection(const std::string& config, const std::vector<std::string>& overrides) {
   try {
     const Case c = read_case(testing::config(config), overrides);
@@ -458,17 +482,10 @@ TEST_CASE("axisymmetric timeseries.csv: stress and strain as rr zz tt, reactions
   Case c = read_case(testing::config("axisymmetric/uniaxial_cylinder.toml"));
   c.output.directory = dir.path;
   REQUIRE(testing::run(c, true).status == RunStatus::completed);
-  std::ifstream in(dir.path / "timeseries.csv");
-  std::string header_line, line, last;
-  REQUIRE(std::getline(in, header_line));
-  while (std::getline(in, line)) last = line;
-  auto split = [](const std::string& text) {
-    std::vector<std::string> cells;
-    std::istringstream s(text);
-    for (std::string cell; std::getline(s, cell, ',');) cells.push_back(cell);
-    return cells;
-  };
-  const std::vector<std::string> header = split(header_line), row = split(last);
+  const Timeseries series = read_timeseries(dir.path / "timeseries.csv");
+  const std::vector<std::string>& header = series.header;
+  const std::string header_line = series.header_line;
+  const std::vector<std::string>& row = series.rows.back();
   REQUIRE(row.size() == header.size());
   auto column = [&](const std::string& name) -> double {
     const auto at = std::ranges::find(header, name);
@@ -508,16 +525,8 @@ TEST_CASE("axisymmetric contact: a rigid circular punch in a von Mises cylinder,
   Case c = read_case(testing::config("axisymmetric/circular_punch.toml"));
   c.output.directory = dir.path;
   REQUIRE(testing::run(c, true).status == RunStatus::completed);
-  std::ifstream in(dir.path / "timeseries.csv");
-  std::string header_line, line;
-  REQUIRE(std::getline(in, header_line));
-  auto split = [](const std::string& text) {
-    std::vector<std::string> cells;
-    std::istringstream s(text);
-    for (std::string cell; std::getline(s, cell, ',');) cells.push_back(cell);
-    return cells;
-  };
-  const std::vector<std::string> header = split(header_line);
+  const Timeseries series = read_timeseries(dir.path / "timeseries.csv");
+  const std::vector<std::string>& header = series.header;
   auto index = [&](const std::string& name) {
     const auto at = std::ranges::find(header, name);
     REQUIRE_MESSAGE(at != header.end(), name);
@@ -526,11 +535,8 @@ TEST_CASE("axisymmetric contact: a rigid circular punch in a von Mises cylinder,
   const std::size_t normal = index("contact.block~punch.normal"), force = index("reaction.punch.y"),
                     work = index("rigid.punch.work"), balance = index("energy_balance_error");
   double least_normal = 0.0;
-  std::vector<std::string> row;
-  while (std::getline(in, line)) {
-    row = split(line);
-    least_normal = std::min(least_normal, std::stod(row.at(normal)));
-  }
+  for (const auto& r : series.rows) least_normal = std::min(least_normal, std::stod(r.at(normal)));
+  const std::vector<std::string>& row = series.rows.back();
   const double a = 0.1, k = 1e5 / std::sqrt(3.0), shield = 5.69 * k;
   const double pressure = std::abs(std::stod(row.at(force))) / (a * a / 2.0);
   MESSAGE("circular punch: mean pressure " << pressure / k << " k against Shield's 5.69 k; energy balance "

@@ -33,6 +33,17 @@ inline RunSummary run(const Case& c, bool write = false) {
   return run_case(c, options);
 }
 
+// Runs a case that should fail: the SimulationError's message, empty if
+// the run completed.
+inline std::string run_failure(const Case& c) {
+  try {
+    run(c);
+  } catch (const SimulationError& e) {
+    return e.what();
+  }
+  return "";
+}
+
 // The simulation of a case, as run_case builds it, to step by hand.
 template <int D, class Shape>
 Simulation<D, Shape> simulation(const Case& c, std::function<void(Stage)> observer = {}) {
