@@ -82,6 +82,16 @@ Timeseries read_timeseries(const std::filesystem::path& file) {
   return t;
 }
 
+// Runs a shipped case to its end, writing its results in a scratch
+// directory, and reads its timeseries.csv.
+Timeseries run_for_timeseries(const std::string& config) {
+  testing::TempDir dir("flowmpm_axisymmetric_run");
+  Case c = read_case(testing::config(config));
+  c.output.directory = dir.path;
+  REQUIRE(testing::run(c, true).status == RunStatus::completed);
+  return read_timeseries(dir.path / "timeseries.csv");
+}
+
 std::string rejection(const std::string& config, const std::vector<std::string>& overrides) {
   try {
     const Case c = read_case(testing::config(config), overrides);
@@ -478,11 +488,7 @@ TEST_CASE("axisymmetric timeseries.csv: stress and strain as rr zz tt, reactions
   // turn, 2 pi times. The top's at 0.1 s is sigma_zz pi b^2 = -pi N over
   // the full turn (-1 Pa on the top face of radius 1 m), within 1.1 % as
   // the 3D block's top (tests/test_reactions.cpp: a step of load behind).
-  testing::TempDir dir("flowmpm_axisymmetric_csv");
-  Case c = read_case(testing::config("axisymmetric/uniaxial_cylinder.toml"));
-  c.output.directory = dir.path;
-  REQUIRE(testing::run(c, true).status == RunStatus::completed);
-  const Timeseries series = read_timeseries(dir.path / "timeseries.csv");
+  const Timeseries series = run_for_timeseries("axisymmetric/uniaxial_cylinder.toml");
   const std::vector<std::string>& header = series.header;
   const std::string header_line = series.header_line;
   const std::vector<std::string>& row = series.rows.back();
@@ -521,11 +527,7 @@ TEST_CASE("axisymmetric contact: a rigid circular punch in a von Mises cylinder,
   // bodies never touched in this mode: no force at all. Asserted: within
   // 10 % of Shield's pressure (the plane-strain punch's tolerance), no
   // pull, the balance within 2 % of the punch's work.
-  testing::TempDir dir("flowmpm_axisymmetric_punch");
-  Case c = read_case(testing::config("axisymmetric/circular_punch.toml"));
-  c.output.directory = dir.path;
-  REQUIRE(testing::run(c, true).status == RunStatus::completed);
-  const Timeseries series = read_timeseries(dir.path / "timeseries.csv");
+  const Timeseries series = run_for_timeseries("axisymmetric/circular_punch.toml");
   const std::vector<std::string>& header = series.header;
   auto index = [&](const std::string& name) {
     const auto at = std::ranges::find(header, name);
