@@ -186,10 +186,11 @@ void log_end(spdlog::logger& log, const RunServices& run) {
            summary.steps, summary.particles, summary.step_loop_seconds, summary.particle_steps_per_second,
            summary.setup_seconds, summary.output_seconds, run.sim->scalars().sorts);
   for (const auto& b : summary.bodies) {
-    log.info("body '{}' at t = {:.6g} s: mean stress xx {:.6g} yy {:.6g} zz {:.6g} Pa, mean strain xx {:.6g} "
-             "yy {:.6g} zz {:.6g}",
-             b.name, t, b.mean_stress[0], b.mean_stress[1], b.mean_stress[2], b.mean_strain[0], b.mean_strain[1],
-             b.mean_strain[2]);
+    const TensorComponentNames& n = summary.axisymmetric ? axisymmetric_component_names : voigt_component_names;
+    log.info("body '{}' at t = {:.6g} s: mean stress {} {:.6g} {} {:.6g} {} {:.6g} Pa, mean strain {} {:.6g} "
+             "{} {:.6g} {} {:.6g}",
+             b.name, t, n[0], b.mean_stress[0], n[1], b.mean_stress[1], n[2], b.mean_stress[2], n[0],
+             b.mean_strain[0], n[1], b.mean_strain[1], n[2], b.mean_strain[2]);
   }
   log.info("energy at the end: kinetic {:.6g} J, stored {:.6g} J, dissipated {:.6g} J; work done by gravity "
            "and body forces {:.6g} J, by the constraints {:.6g} J, by the expansion strains {:.6g} J, by the loads "

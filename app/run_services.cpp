@@ -29,6 +29,7 @@ RunServices::RunServices(const Case& c, const RunOptions& options)
   summary.shape_function = sim->shape_function();
   summary.velocity_update = velocity_update_name(c.system.velocity_update);
   summary.dimension = sim->dimension();
+  summary.axisymmetric = sim->stress_state() == StressState::axisymmetric;
   summary.threads = options.threads;
   const SystemSize size = sim->size();
   summary.particles = size.particles;

@@ -552,6 +552,11 @@ TEST_CASE("summary JSON escapes strings and writes null for non-finite numbers")
   CHECK(contains(json, R"("name": "block")"));
   CHECK(contains(json, R"("mean_stress": {"xx": 1.5, "yy": -2, "zz": 0.10000000000000001, )"
                        R"("yz": 0, "xz": 0, "xy": 3.0000000000000002e-300})"));
+  // Axisymmetric: the components named as timeseries.csv and results.h5 name them.
+  RunSummary axisymmetric = summary;
+  axisymmetric.axisymmetric = true;
+  CHECK(contains(summary_json(axisymmetric), R"("mean_stress": {"rr": 1.5, "zz": -2, "tt": 0.10000000000000001, )"
+                                             R"("zt": 0, "rt": 0, "rz": 3.0000000000000002e-300})"));
   CHECK(contains(json, R"("l2_displacement": 0.25,)"));
   CHECK(contains(json, R"("max_stress": null)"));
   CHECK_FALSE(contains(json, "nan"));

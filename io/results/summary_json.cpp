@@ -14,11 +14,12 @@ namespace {
 // or infinity, so those are written as null.
 std::string number(double value) { return std::isfinite(value) ? exact_text(value) : "null"; }
 
-// {"xx": ..., "yy": ..., "zz": ..., "yz": ..., "xz": ..., "xy": ...}
-std::string voigt(const std::array<double, 6>& values) {
+// {"xx": ..., "yy": ..., "zz": ..., "yz": ..., "xz": ..., "xy": ...}, or
+// with the axisymmetric names (rr zz tt zt rt rz), as timeseries.csv.
+std::string voigt(const std::array<double, 6>& values, const TensorComponentNames& names) {
   std::string out = "{";
   for (std::size_t i = 0; i < 6; ++i)
-    out += std::string(i == 0 ? "" : ", ") + "\"" + voigt_component_names[i] + "\": " + number(values[i]);
+    out += std::string(i == 0 ? "" : ", ") + "\"" + names[i] + "\": " + number(values[i]);
   return out + "}";
 }
 
@@ -74,8 +75,9 @@ std::string summary_json(const RunSummary& s) {
     out += i == 0 ? "\n" : ",\n";
     out += "    {\n";
     out += "      \"name\": " + quoted_string(body.name) + ",\n";
-    out += "      \"mean_stress\": " + voigt(body.mean_stress) + ",\n";
-    out += "      \"mean_strain\": " + voigt(body.mean_strain) + "\n";
+    const TensorComponentNames& names = s.axisymmetric ? axisymmetric_component_names : voigt_component_names;
+    out += "      \"mean_stress\": " + voigt(body.mean_stress, names) + ",\n";
+    out += "      \"mean_strain\": " + voigt(body.mean_strain, names) + "\n";
     out += "    }";
   }
   out += s.bodies.empty() ? "],\n" : "\n  ],\n";

@@ -27,6 +27,7 @@ struct RunSummary {
   RunStatus status = RunStatus::completed;
   std::string failure;  // with failed: the message
   int dimension = 3;
+  bool axisymmetric = false;  // the bodies' means then named rr zz tt zt rt rz
   int threads = 1;
   std::size_t particles = 0, nodes = 0;
   std::int64_t steps = 0;
