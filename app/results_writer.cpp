@@ -16,8 +16,7 @@ ResultsWriter::ResultsWriter(const Case& c, const RunOptions& options, const Sim
       body_count_(c.system.bodies.size()),
       reactions_(reaction_names(sim.diagnostics(c.system.bodies.size()))),
       error_names_(std::move(error_names)),
-      components_(sim.stress_state() == StressState::axisymmetric ? axisymmetric_component_names
-                                                                    : voigt_component_names) {
+      components_(tensor_component_names(sim.stress_state() == StressState::axisymmetric)) {
   for (const auto& b : c.system.bodies) body_names_.push_back(b.name);
 }
 

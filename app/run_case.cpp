@@ -186,7 +186,7 @@ void log_end(spdlog::logger& log, const RunServices& run) {
            summary.steps, summary.particles, summary.step_loop_seconds, summary.particle_steps_per_second,
            summary.setup_seconds, summary.output_seconds, run.sim->scalars().sorts);
   for (const auto& b : summary.bodies) {
-    const TensorComponentNames& n = summary.axisymmetric ? axisymmetric_component_names : voigt_component_names;
+    const TensorComponentNames& n = tensor_component_names(summary.axisymmetric);
     log.info("body '{}' at t = {:.6g} s: mean stress {} {:.6g} {} {:.6g} {} {:.6g} Pa, mean strain {} {:.6g} "
              "{} {:.6g} {} {:.6g}",
              b.name, t, n[0], b.mean_stress[0], n[1], b.mean_stress[1], n[2], b.mean_stress[2], n[0],

@@ -13,6 +13,9 @@ inline constexpr TensorComponentNames voigt_component_names = {"xx", "yy", "zz",
 // The same in axisymmetric analysis (x the radius r, y the axial z, z the
 // hoop direction theta), as results.h5 lists them (rr zz tt rz zt rt).
 inline constexpr TensorComponentNames axisymmetric_component_names = {"rr", "zz", "tt", "zt", "rt", "rz"};
+inline const TensorComponentNames& tensor_component_names(bool axisymmetric) {
+  return axisymmetric ? axisymmetric_component_names : voigt_component_names;
+}
 
 // The order a symmetric tensor's six values are listed in outside the
 // engine (case keys, particle files, results.h5): xx, yy, zz, xy, yz, xz,

@@ -75,7 +75,7 @@ void contact_bonds(DiscreteSystem<D, Shape>& system) {
           // length in the section (contact_volumes maps areas there) times r.
           double area = std::min(std::abs(contact.gradient(a, n).dot(normal)),
                                  std::abs(contact.gradient(b, n).dot(normal)));
-          if (system.stress_state == StressState::axisymmetric) area *= grid.origin[0] + ijk[0] * grid.h[0];
+          if (system.stress_state == StressState::axisymmetric) area *= grid.node_position(ijk)[0];
           Vec<D> node;
           for (int d = 0; d < D; ++d) node[d] = ijk[d] * grid.h[d];
           const auto at_node = [&](int k) {

@@ -401,14 +401,12 @@ void g2p(DiscreteSystem<D, Shape>& system) {
 // found them.
 template <int D, class Shape, bool Stress, bool Hoop>
 void g2p_with_motion(DiscreteSystem<D, Shape>& system) {
-  switch (system.velocity_update) {
-    case VelocityUpdate::apic: g2p<D, Shape, true, Stress, true, Hoop>(system); return;
-    case VelocityUpdate::xpic:
-      xpic_correction(system);
-      g2p<D, Shape, true, Stress, false, Hoop>(system);
-      return;
-    default: g2p<D, Shape, true, Stress, false, Hoop>(system);
+  if (system.velocity_update == VelocityUpdate::apic) {
+    g2p<D, Shape, true, Stress, true, Hoop>(system);
+    return;
   }
+  if (system.velocity_update == VelocityUpdate::xpic) xpic_correction(system);
+  g2p<D, Shape, true, Stress, false, Hoop>(system);
 }
 
 // The pass, with the hoop rate where the analysis is axisymmetric.

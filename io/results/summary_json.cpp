@@ -75,7 +75,7 @@ std::string summary_json(const RunSummary& s) {
     out += i == 0 ? "\n" : ",\n";
     out += "    {\n";
     out += "      \"name\": " + quoted_string(body.name) + ",\n";
-    const TensorComponentNames& names = s.axisymmetric ? axisymmetric_component_names : voigt_component_names;
+    const TensorComponentNames& names = tensor_component_names(s.axisymmetric);
     out += "      \"mean_stress\": " + voigt(body.mean_stress, names) + ",\n";
     out += "      \"mean_strain\": " + voigt(body.mean_strain, names) + "\n";
     out += "    }";
