@@ -231,6 +231,32 @@ ShapeRunner runner_named(const std::string& shape) {
                              });
 }
 
+// Two models timed in turn, `repeats` times: the median rates of a and b
+// on 1 thread and on 2, and a's particle count.
+struct PairRates {
+  double a1 = 0.0, b1 = 0.0, a2 = 0.0, b2 = 0.0;  // particle-steps per second
+  std::size_t particles = 0;
+};
+
+PairRates pair_rates(decltype(ShapeRunner::time_steps) time_steps, const SystemSpec& a, const SystemSpec& b,
+                     int steps, int repeats) {
+  std::vector<double> a1, b1, a2, b2;
+  PairRates r;
+  for (int k = 0; k < repeats; ++k) {
+    const Timing t = time_steps(a, 1, false, steps, TransportBranch::beside);
+    r.particles = t.particles;
+    a1.push_back(t.rate);
+    b1.push_back(time_steps(b, 1, false, steps, TransportBranch::beside).rate);
+    a2.push_back(time_steps(a, 2, false, steps, TransportBranch::beside).rate);
+    b2.push_back(time_steps(b, 2, false, steps, TransportBranch::beside).rate);
+  }
+  r.a1 = median(a1);
+  r.b1 = median(b1);
+  r.a2 = median(a2);
+  r.b2 = median(b2);
+  return r;
+}
+
 // The transport table: per size, the median rates (2 threads unless
 // stated) without transport, with the branch beside the momentum stages
 // and run before them; transport's cost per particle-step; the gain of the
@@ -300,8 +326,6 @@ void contact_table(const ShapeRunner& runner, const std::vector<double>& sizes, 
     const SystemSpec one = block_case(static_cast<std::size_t>(size), shape);
     const SystemSpec two = block_case(static_cast<std::size_t>(size), shape, "", true);
     const int steps = std::max(5, static_cast<int>(particle_steps / size));
-    std::vector<double> o1, c1, o2, c2;
-    std::size_t n = 0;
     // Peak resident memory of each model, above what the process held before it.
     auto peak_bytes = [&](const SystemSpec& c) {
       const std::size_t before = resident_kib("VmRSS:");
@@ -310,15 +334,9 @@ void contact_table(const ShapeRunner& runner, const std::vector<double>& sizes, 
       return 1024.0 * static_cast<double>(resident_kib("VmHWM:") - before) / static_cast<double>(t.particles);
     };
     const double bytes_one = peak_bytes(one), bytes_two = peak_bytes(two);
-    for (int r = 0; r < repeats; ++r) {
-      const Timing t = runner.time_steps(one, 1, false, steps, TransportBranch::beside);
-      n = t.particles;
-      o1.push_back(t.rate);
-      c1.push_back(runner.time_steps(two, 1, false, steps, TransportBranch::beside).rate);
-      o2.push_back(runner.time_steps(one, 2, false, steps, TransportBranch::beside).rate);
-      c2.push_back(runner.time_steps(two, 2, false, steps, TransportBranch::beside).rate);
-    }
-    const double mo1 = median(o1), mc1 = median(c1), mo2 = median(o2), mc2 = median(c2);
+    const PairRates r = pair_rates(runner.time_steps, one, two, steps, repeats);
+    const std::size_t n = r.particles;
+    const double mo1 = r.a1, mc1 = r.b1, mo2 = r.a2, mc2 = r.b2;
     std::printf("%10zu %6d %10.2f %10.2f %10.2f %10.2f %8.2f %8.2f %9.0f %9.0f\n", n, steps, mo1 / 1e6, mc1 / 1e6,
                 mo2 / 1e6, mc2 / 1e6, mc1 / mo1, mc2 / mo2, bytes_one, bytes_two);
     std::fflush(stdout);
@@ -426,17 +444,9 @@ void axisymmetric_table(const ShapeRunner& runner, const std::vector<double>& si
     const SystemSpec plane = section_case(static_cast<std::size_t>(size), shape, false);
     const SystemSpec axisymmetric = section_case(static_cast<std::size_t>(size), shape, true);
     const int steps = std::max(5, static_cast<int>(particle_steps / size));
-    std::vector<double> p1, a1, p2, a2;
-    std::size_t n = 0;
-    for (int r = 0; r < repeats; ++r) {
-      const Timing t = runner.time_steps_2d(plane, 1, false, steps, TransportBranch::beside);
-      n = t.particles;
-      p1.push_back(t.rate);
-      a1.push_back(runner.time_steps_2d(axisymmetric, 1, false, steps, TransportBranch::beside).rate);
-      p2.push_back(runner.time_steps_2d(plane, 2, false, steps, TransportBranch::beside).rate);
-      a2.push_back(runner.time_steps_2d(axisymmetric, 2, false, steps, TransportBranch::beside).rate);
-    }
-    const double mp1 = median(p1), ma1 = median(a1), mp2 = median(p2), ma2 = median(a2);
+    const PairRates r = pair_rates(runner.time_steps_2d, plane, axisymmetric, steps, repeats);
+    const std::size_t n = r.particles;
+    const double mp1 = r.a1, ma1 = r.b1, mp2 = r.a2, ma2 = r.b2;
     std::printf("%10zu %6d %10.2f %10.2f %10.2f %10.2f %9.3f %9.3f\n", n, steps, mp1 / 1e6, ma1 / 1e6, mp2 / 1e6,
                 ma2 / 1e6, mp1 / ma1, mp2 / ma2);
     std::fflush(stdout);

@@ -26,28 +26,8 @@
 # It also prints the numbers quoted in docs/validation/axisymmetric.md.
 # Needs Debian's python3 with h5py and numpy, and gnuplot (scripts/setup.sh).
 set -euo pipefail
-bin=${1:?usage: plot_axisymmetric.sh FLOWMPM RUNS_DIR [PNG_DIR]}
-runs=${2:?usage: plot_axisymmetric.sh FLOWMPM RUNS_DIR [PNG_DIR]}
-root=$(cd "$(dirname "$0")/.." && pwd)
-png=${3:-$root/docs}
-threads=${THREADS:-1}
-configs=$root/configs
-mkdir -p "$runs" "$png"
-data=$(mktemp -d)
-trap 'rm -rf "$data"' EXIT
-
-# run NAME CASE [--set KEY=VALUE ...]: runs CASE into RUNS_DIR/NAME unless done.
-run() {
-  local name=$1 case=$2
-  shift 2
-  local out=$runs/$name
-  if grep -qs '"status": "completed"' "$out/summary.json"; then
-    return
-  fi
-  rm -rf "$out"
-  echo "plot_axisymmetric: running $name" >&2
-  "$bin" run "$case" --threads "$threads" --quiet --output "$out" "$@"
-}
+# shellcheck source=scripts/plot_runs.sh
+source "$(dirname "$0")/plot_runs.sh"
 
 run heated_free "$configs/axisymmetric/heated_cylinder.toml" --set output.every=20
 run heated_held "$configs/axisymmetric/heated_cylinder_held.toml" --set output.every=20

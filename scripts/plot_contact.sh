@@ -33,28 +33,8 @@
 # estimate (the numbers quoted in docs/validation/contact.md).
 # Needs Debian's python3 with h5py and numpy, and gnuplot (scripts/setup.sh).
 set -euo pipefail
-bin=${1:?usage: plot_contact.sh FLOWMPM RUNS_DIR [PNG_DIR]}
-runs=${2:?usage: plot_contact.sh FLOWMPM RUNS_DIR [PNG_DIR]}
-root=$(cd "$(dirname "$0")/.." && pwd)
-png=${3:-$root/docs}
-threads=${THREADS:-1}
-configs=$root/configs
-mkdir -p "$runs" "$png"
-data=$(mktemp -d)
-trap 'rm -rf "$data"' EXIT
-
-# run NAME CASE [--set KEY=VALUE ...]: runs CASE into RUNS_DIR/NAME unless done.
-run() {
-  local name=$1 case=$2
-  shift 2
-  local out=$runs/$name
-  if grep -qs '"status": "completed"' "$out/summary.json"; then
-    return
-  fi
-  rm -rf "$out"
-  echo "plot_contact: running $name" >&2
-  "$bin" run "$case" --threads "$threads" --quiet --output "$out" "$@"
-}
+# shellcheck source=scripts/plot_runs.sh
+source "$(dirname "$0")/plot_runs.sh"
 
 fields='output.fields=["mass","material"]'
 for mu in 0 0.2 0.5 0.7; do
