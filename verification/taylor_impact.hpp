@@ -9,10 +9,16 @@
 // sigma_0 eps_0 / (n + 1) ((1 + eps_p / eps_0)^(n + 1) - 1).
 // Error, over the samples: energy, max |E_k + E_s + W_p - E_0| / E_0.
 // Measures at the end: final_length (the highest particle's distance from
-// the wall plus half a particle), foot_radius (the largest distance from
-// the bar's axis, through `center`, of the particles that started in the
-// layer at the wall, plus half a particle), their ratios to `length` and
-// `radius`, and plastic_work (W_p / E_0).
+// the wall plus half a particle), foot_radius (half the caliper width of
+// the particles that started in the layer at the wall, along the grid axes
+// normal to the bar's: the largest |x_k - center_k| plus half a particle,
+// averaged over those axes), their ratios to `length` and `radius`, and
+// plastic_work (W_p / E_0). A caliper along the grid axes, not the largest
+// distance from the axis: a Cartesian lattice fills a round bar as a
+// staircase whose corners stand up to half a particle beyond its radius
+// between the axes, while along them its outermost particles lie at the
+// radius less half a particle, so the measure starts at the bar's radius
+// in 2D, axisymmetric and 3D alike.
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -65,7 +71,8 @@ struct TaylorImpact {
   template <int D, class Shape>
   void sample(const DiscreteSystem<D, Shape>& system) {
     const Diagnostics d = diagnostics(system, 1);
-    double work = 0.0, top = -std::numeric_limits<double>::infinity(), foot_radius = 0.0;
+    double work = 0.0, top = -std::numeric_limits<double>::infinity();
+    Vec3 half_width{};  // along each grid axis, of the wall layer
     for (const auto& b : system.batches) {
       const double half = 0.5 * b.particle_length;
       if (const auto* states = std::get_if<StateArray<VonMises>>(&b.states)) {
@@ -74,10 +81,7 @@ struct TaylorImpact {
       for (std::size_t p = 0; p < b.size(); ++p) {
         top = std::max(top, std::abs(b.x[p][axis] - wall) + half);
         if (std::abs(b.x0[p][axis] - wall) < b.particle_length) {
-          double r2 = 0.0;
-          for (int k = 0; k < D; ++k)
-            if (k != axis) r2 += (b.x[p][k] - center[k]) * (b.x[p][k] - center[k]);
-          foot_radius = std::max(foot_radius, std::sqrt(r2) + half);
+          for (int k = 0; k < D; ++k) half_width[k] = std::max(half_width[k], std::abs(b.x[p][k] - center[k]) + half);
         }
       }
     }
@@ -85,7 +89,9 @@ struct TaylorImpact {
     if (std::isnan(energy0)) energy0 = energy;
     energy_error = std::max(energy_error, std::abs(energy - energy0) / energy0);
     length = top;
-    foot = foot_radius;
+    foot = 0.0;
+    for (int k = 0; k < D; ++k)
+      if (k != axis) foot += half_width[k] / (D - 1);
     plastic = work / energy0;
   }
 
