@@ -59,12 +59,6 @@ double axial_increment(double l, int n) {
   return 2.0 * (r - 1.0) / (r + 1.0);
 }
 
-double largest(const Voigt& s) {
-  double m = 0.0;
-  for (double v : s) m = std::max(m, std::abs(v));
-  return m;
-}
-
 }  // namespace
 
 TEST_CASE("reading: the isotropic constants, checked; expansion refused") {

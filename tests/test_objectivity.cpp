@@ -20,12 +20,6 @@ namespace {
 
 constexpr double pi = std::numbers::pi;
 
-double largest_component(const Voigt& s) {
-  double m = 0.0;
-  for (double v : s) m = std::max(m, std::abs(v));
-  return m;
-}
-
 // A point stressed sigma0 along x (plane strain, so sigma_zz too where
 // the model carries it), turned a quarter turn about z in n steps of the
 // spin increment whose Cayley rotations add up to pi / 2 (each
