@@ -68,6 +68,25 @@ using Clock = std::chrono::steady_clock;
 
 namespace {
 
+// The benches' material: a soft elastic solid.
+LinearElastic::Parameters bench_elastic() {
+  LinearElastic::Parameters elastic;
+  elastic.density = 1000.0;       // kg/m^3
+  elastic.youngs_modulus = 1e7;   // Pa
+  elastic.poisson_ratio = 0.3;
+  return elastic;
+}
+
+// The node plane y = 0 held still on every axis.
+NodeSetSpec held_base(int dimension) {
+  NodeSetSpec base;
+  base.name = "base";
+  base.axis = 1;
+  base.at = 0.0;
+  for (int d = 0; d < dimension; ++d) base.velocity[d] = TimeFunction{{{0.0, 0.0}}};
+  return base;
+}
+
 // The block: k x k x k cells of 8 particles each (2 per axis), resting on
 // the plane of nodes two cells above the grid's bottom, which is held fixed
 // (two cells of grid around the block leave room for every shape function).
@@ -83,10 +102,7 @@ SystemSpec block_case(std::size_t target_particles, const std::string& shape, co
   c.grid.cell_size = {h, h, h};
   c.grid.cells = {k + 4, k + 5, k + 4};
   c.gravity = {0.0, -9.81, 0.0};
-  LinearElastic::Parameters elastic;
-  elastic.density = 1000.0;       // kg/m^3
-  elastic.youngs_modulus = 1e7;   // Pa
-  elastic.poisson_ratio = 0.3;
+  LinearElastic::Parameters elastic = bench_elastic();
   if (!transport.empty()) {
     // kappa = k / (rho C) = 1e-3 m^2/s: the wave limit governs dt at every size.
     elastic.transport.heat_capacity = 1000.0;             // J/(kg K)
@@ -107,11 +123,7 @@ SystemSpec block_case(std::size_t target_particles, const std::string& shape, co
   body.spacing = {h / 2, h / 2, h / 2};
   body.temperature = 300.0;  // K, used with transport only
   c.bodies.push_back(body);
-  NodeSetSpec base;
-  base.name = "base";
-  base.axis = 1;
-  base.at = 0.0;
-  for (int d = 0; d < 3; ++d) base.velocity[d] = TimeFunction{{{0.0, 0.0}}};
+  NodeSetSpec base = held_base(3);
   if (!transport.empty()) base.temperature = TimeFunction{{{0.0, 400.0}}};
   if (transport == "both") base.concentration = TimeFunction{{{0.0, 0.1}}};
   c.node_sets.push_back(base);
@@ -407,22 +419,13 @@ SystemSpec section_case(std::size_t target_particles, const std::string& shape, 
   c.grid.cell_size = {h, h, h};
   c.grid.cells = {k + (axisymmetric ? 2 : 4), k + 5, 1};
   c.gravity = {0.0, -9.81, 0.0};
-  LinearElastic::Parameters elastic;
-  elastic.density = 1000.0;       // kg/m^3
-  elastic.youngs_modulus = 1e7;   // Pa
-  elastic.poisson_ratio = 0.3;
-  c.materials.push_back({"elastic", LinearElastic(elastic)});
+  c.materials.push_back({"elastic", LinearElastic(bench_elastic())});
   BodySpec body;
   body.name = "section";
   body.shape = BodyShape{BoxShape{{0.0, 0.0, 0.0}, {1.0, 1.0, 0.0}}};
   body.spacing = {h / 2, h / 2, h / 2};
   c.bodies.push_back(body);
-  NodeSetSpec base;
-  base.name = "base";
-  base.axis = 1;
-  base.at = 0.0;
-  for (int d = 0; d < 2; ++d) base.velocity[d] = TimeFunction{{{0.0, 0.0}}};
-  c.node_sets.push_back(base);
+  c.node_sets.push_back(held_base(2));
   const StableStep stable = stable_time_step(c, scheme_named("usl"));
   c.dt = std::min(0.5 * stable.crossing, stable.dt());
   return c;

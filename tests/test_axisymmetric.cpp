@@ -29,7 +29,6 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
-#include <fstream>
 #include <iomanip>
 #include <numbers>
 #include <sstream>
@@ -57,41 +56,19 @@ std::string text(double value) {
   return s.str();
 }
 
-// The message of the CaseError that reading or building the case throws.
-// A run's timeseries.csv: its header (as written, and split) and rows,
-// each split at the commas.
-struct Timeseries {
-  std::string header_line;
-  std::vector<std::string> header;
-  std::vector<std::vector<std::string>> rows;
-};
-
-Timeseries read_timeseries(const std::filesystem::path& file) {
-  auto split = [](const std::string& text) {
-    std::vector<std::string> cells;
-    std::istringstream s(text);
-    for (std::string cell; std::getline(s, cell, ',');) cells.push_back(cell);
-    return cells;
-  };
-  Timeseries t;
-  std::ifstream in(file);
-  REQUIRE(std::getline(in, t.header_line));
-  t.header = split(t.header_line);
-  for (std::string line; std::getline(in, line);) t.rows.push_back(split(line));
-  REQUIRE(!t.rows.empty());
-  return t;
-}
-
 // Runs a shipped case to its end, writing its results in a scratch
 // directory, and reads its timeseries.csv.
-Timeseries run_for_timeseries(const std::string& config) {
+testing::Timeseries run_for_timeseries(const std::string& config) {
   testing::TempDir dir("flowmpm_axisymmetric_run");
   Case c = read_case(testing::config(config));
   c.output.directory = dir.path;
   REQUIRE(testing::run(c, true).status == RunStatus::completed);
-  return read_timeseries(dir.path / "timeseries.csv");
+  testing::Timeseries t = testing::read_timeseries(dir.path / "timeseries.csv");
+  REQUIRE(!t.rows.empty());
+  return t;
 }
 
+// The message of the CaseError that reading or building the case throws.
 std::string rejection(const std::string& config, const std::vector<std::string>& overrides) {
   try {
     const Case c = read_case(testing::config(config), overrides);
@@ -497,7 +474,7 @@ TEST_CASE("axisymmetric timeseries.csv: stress and strain as rr zz tt, reactions
   // turn, 2 pi times. The top's at 0.1 s is sigma_zz pi b^2 = -pi N over
   // the full turn (-1 Pa on the top face of radius 1 m), within 1.1 % as
   // the 3D block's top (tests/test_reactions.cpp: a step of load behind).
-  const Timeseries series = run_for_timeseries("axisymmetric/uniaxial_cylinder.toml");
+  const testing::Timeseries series = run_for_timeseries("axisymmetric/uniaxial_cylinder.toml");
   const std::vector<std::string>& header = series.header;
   const std::string header_line = series.header_line;
   const std::vector<std::string>& row = series.rows.back();
@@ -536,7 +513,7 @@ TEST_CASE("axisymmetric contact: a rigid circular punch in a von Mises cylinder,
   // bodies never touched in this mode: no force at all. Asserted: within
   // 10 % of Shield's pressure (the plane-strain punch's tolerance), no
   // pull, the balance within 2 % of the punch's work.
-  const Timeseries series = run_for_timeseries("axisymmetric/circular_punch.toml");
+  const testing::Timeseries series = run_for_timeseries("axisymmetric/circular_punch.toml");
   const std::vector<std::string>& header = series.header;
   auto index = [&](const std::string& name) {
     const auto at = std::ranges::find(header, name);

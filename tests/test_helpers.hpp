@@ -2,6 +2,7 @@
 #pragma once
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,29 @@ inline std::string run_failure(const Case& c) {
 template <int D, class Shape>
 Simulation<D, Shape> simulation(const Case& c, std::function<void(Stage)> observer = {}) {
   return Simulation<D, Shape>(c.system, c.scheme->wiring, c.time_step.fixed_dt(), std::move(observer));
+}
+
+// A run's timeseries.csv: its header (as written, and split at the commas)
+// and its rows, each split; both empty where the file cannot be read.
+struct Timeseries {
+  std::string header_line;
+  std::vector<std::string> header;
+  std::vector<std::vector<std::string>> rows;
+};
+
+inline Timeseries read_timeseries(const std::filesystem::path& file) {
+  auto split = [](const std::string& text) {
+    std::vector<std::string> cells;
+    std::istringstream s(text);
+    for (std::string cell; std::getline(s, cell, ',');) cells.push_back(cell);
+    return cells;
+  };
+  Timeseries t;
+  std::ifstream in(file);
+  if (!std::getline(in, t.header_line)) return t;
+  t.header = split(t.header_line);
+  for (std::string line; std::getline(in, line);) t.rows.push_back(split(line));
+  return t;
 }
 
 }  // namespace flowmpm::testing

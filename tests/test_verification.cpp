@@ -20,7 +20,6 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
 #include "app/run_case.hpp"
@@ -137,13 +136,10 @@ TEST_CASE("timeseries.csv carries the error norms so far; the last row equals su
   Case c = read_case(testing::config("verification/bar_vibration_small.toml"), {"output.every=80"});
   c.output.directory = dir;
   const RunSummary s = run_case(c, RunOptions{});
-  std::ifstream csv(dir / "timeseries.csv");
-  std::string header, line, last;
-  std::getline(csv, header);
-  while (std::getline(csv, line)) last = line;
-  std::vector<std::string> names, values;
-  for (std::stringstream h(header); std::getline(h, line, ',');) names.push_back(line);
-  for (std::stringstream v(last); std::getline(v, line, ',');) values.push_back(line);
+  const testing::Timeseries csv = testing::read_timeseries(dir / "timeseries.csv");
+  REQUIRE(!csv.rows.empty());
+  const std::vector<std::string>& names = csv.header;
+  const std::vector<std::string>& values = csv.rows.back();
   REQUIRE(names.size() == values.size());
   int found = 0;
   for (std::size_t k = 0; k < names.size(); ++k) {
