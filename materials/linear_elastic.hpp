@@ -58,8 +58,10 @@ struct LinearElastic {
   // stress: d eps_yy = d eps_zz = th - nu (d eps_xx - th); plane stress:
   // d eps_zz = th - lambda / (lambda + 2 mu) (d eps_xx + d eps_yy - 2 th)),
   // th the expansion increment.
+  // Always inlined: out of line, its call boundary cost the particle loop
+  // more than the rotation itself (docs/performance.md).
   template <StressState Kind>
-  void update(State&, Voigt& sigma, Voigt& deps, const MaterialInput& in) const {
+  [[gnu::always_inline]] void update(State&, Voigt& sigma, Voigt& deps, const MaterialInput& in) const {
     rotate_with_spin<Kind>(sigma, in.dL);
     if (!parameters.expansion.any()) return elastic_update<Kind>(sigma, deps);
     // The update sees the mechanical increment d eps - th I; the total is restored after.

@@ -74,26 +74,33 @@ inline Eigen::Quaterniond cayley(const Eigen::Vector3d& w) {
 //   dR a dR^T = a + k (M a + a M^T) + k^2 M a M^T,
 // whose products need not wait for the division that gives k (the
 // particle loop's longest chain otherwise), and which adds the change to
-// a instead of rebuilding it.
+// a instead of rebuilding it. Written out in scalars: with arrays and a
+// helper lambda GCC left the lambda out of line in the particle loop (a
+// call per component).
 [[gnu::always_inline]] inline void rotate_with_spin(Voigt& a, const Eigen::Matrix3d& dL) {
   const double x = 0.25 * (dL(2, 1) - dL(1, 2)), y = 0.25 * (dL(0, 2) - dL(2, 0)), z = 0.25 * (dL(1, 0) - dL(0, 1));
-  const double hh = x * x + y * y + z * z;
+  const double xx = x * x, yy = y * y, zz = z * z, hh = xx + yy + zz;
   if (hh == 0.0) return;
   const double k = 2.0 / (1.0 + hh);
   // M = skew(h) + h h^T - (h.h) I
-  const double M[3][3] = {{x * x - hh, x * y - z, x * z + y},
-                          {x * y + z, y * y - hh, y * z - x},
-                          {x * z - y, y * z + x, z * z - hh}};
-  const double A[3][3] = {{a[0], a[5], a[4]}, {a[5], a[1], a[3]}, {a[4], a[3], a[2]}};
-  double P[3][3];  // M a
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) P[i][j] = M[i][0] * A[0][j] + M[i][1] * A[1][j] + M[i][2] * A[2][j];
-  auto turned = [&](int i, int j) {
-    const double once = P[i][j] + P[j][i];                                       // (M a + a M^T)_ij
-    const double twice = P[i][0] * M[j][0] + P[i][1] * M[j][1] + P[i][2] * M[j][2];  // (M a M^T)_ij
-    return A[i][j] + k * (once + k * twice);
-  };
-  a = {turned(0, 0), turned(1, 1), turned(2, 2), turned(1, 2), turned(0, 2), turned(0, 1)};
+  const double xy = x * y, xz = x * z, yz = y * z;
+  const double m00 = xx - hh, m11 = yy - hh, m22 = zz - hh;
+  const double m01 = xy - z, m10 = xy + z, m02 = xz + y, m20 = xz - y, m12 = yz - x, m21 = yz + x;
+  const double a00 = a[0], a11 = a[1], a22 = a[2], a12 = a[3], a02 = a[4], a01 = a[5];
+  // P = M a
+  const double p00 = m00 * a00 + m01 * a01 + m02 * a02, p01 = m00 * a01 + m01 * a11 + m02 * a12,
+               p02 = m00 * a02 + m01 * a12 + m02 * a22;
+  const double p10 = m10 * a00 + m11 * a01 + m12 * a02, p11 = m10 * a01 + m11 * a11 + m12 * a12,
+               p12 = m10 * a02 + m11 * a12 + m12 * a22;
+  const double p20 = m20 * a00 + m21 * a01 + m22 * a02, p21 = m20 * a01 + m21 * a11 + m22 * a12,
+               p22 = m20 * a02 + m21 * a12 + m22 * a22;
+  // a_ij + k ((M a + a M^T)_ij + k (M a M^T)_ij)
+  a[0] = a00 + k * (2.0 * p00 + k * (p00 * m00 + p01 * m01 + p02 * m02));
+  a[1] = a11 + k * (2.0 * p11 + k * (p10 * m10 + p11 * m11 + p12 * m12));
+  a[2] = a22 + k * (2.0 * p22 + k * (p20 * m20 + p21 * m21 + p22 * m22));
+  a[3] = a12 + k * (p12 + p21 + k * (p10 * m20 + p11 * m21 + p12 * m22));
+  a[4] = a02 + k * (p02 + p20 + k * (p00 * m20 + p01 * m21 + p02 * m22));
+  a[5] = a01 + k * (p01 + p10 + k * (p00 * m10 + p01 * m11 + p02 * m12));
 }
 
 // The same in a 2D analysis, whose spin is about z alone (dL has no
