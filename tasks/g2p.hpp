@@ -4,7 +4,8 @@
 //             with v_I the velocity after grid_integrate;
 //             APIC: v_p <- sum_I N_Ip v_I, C_p <- sum_I v_I (x) G_Ip
 //             (Stencil's StencilFactor::affine) [Jiang 2015];
-//             XPIC(m): v_p <- sum_I N_Ip (v_I - w_I) (tasks/xpic.hpp);
+//             XPIC(m): v_p <- sum_I N_Ip (v_I - w_I) (tasks/xpic.hpp),
+//             x_p as above, and under USL L_p from v_I - w_I too;
 //             docs/theory/transfers.md.
 // g2p_stress: L_p = sum_I v_I (x) dN_Ip, d eps = sym(L_p) dt, the material
 //             update sigma(d eps), eps += d eps, V_p *= 1 + tr(d eps)
@@ -279,7 +280,8 @@ void g2p(DiscreteSystem<D, Shape>& system) {
       [[maybe_unused]] const double* const mass = field.mass.data();
       for (int d = 0; d < D; ++d) {
         if constexpr (from_momentum) momentum[d] = field.momentum[d].data();
-        velocity[d] = field.velocity[d].data();
+        // XPIC: the filtered velocity u = v^L+ - w, and w.
+        velocity[d] = xpic ? system.xpic[b.field].iterate.velocity[d].data() : field.velocity[d].data();
         velocity_change[d] = xpic ? system.xpic[b.field].correction[d].data() : field.velocity_change[d].data();
       }
       using Affine = Stencil<D, Shape, true, StencilFactor::affine>;
@@ -290,7 +292,8 @@ void g2p(DiscreteSystem<D, Shape>& system) {
           else return 0;
         }();
         // Sums over the stencil, two nodes per lane pair, then the lanes
-        // added. dv_sum: FLIP's velocity change, or XPIC's correction w.
+        // added. v_sum and L: of v^L+, or of XPIC's u; dv_sum: FLIP's
+        // velocity change, or XPIC's correction w.
         NodePair v_sum[D] = {}, dv_sum[D] = {}, L_sum[D][D] = {}, C_sum[D][D] = {};
         [[maybe_unused]] NodePair hoop_sum = {};  // v_r at the particle, with L's velocities
         s.for_each_node_pair([&]<int Count>(int line, int k, std::size_t n) {
@@ -330,7 +333,8 @@ void g2p(DiscreteSystem<D, Shape>& system) {
         if constexpr (Hoop && Stress) hoop = sum(hoop_sum) / b.x[p][0];
         if constexpr (Stress) energy.expansion_work += update_stress(p, L, hoop);
         if constexpr (Motion) {
-          const Vec<D> x_new = b.x[p] + dt * v_grid;
+          // XPIC moves the particles with v^L+ = u + w.
+          const Vec<D> x_new = b.x[p] + dt * (xpic ? Vec<D>(v_grid + dv) : v_grid);
           // A particle must stay where its stencil has nodes and may cross at
           // most one cell per step; otherwise it is not moved and the step
           // fails. (The range is checked on the grid coordinate before it
@@ -354,7 +358,7 @@ void g2p(DiscreteSystem<D, Shape>& system) {
           if constexpr (apic) {
             v_new = v_grid;
           } else if (xpic) {
-            v_new = v_grid - dv;
+            v_new = v_grid;
           } else {
             v_new = a * (b.v[p] + dv) + (1.0 - a) * v_grid;
           }

@@ -93,7 +93,9 @@ void xpic_iterate(DiscreteSystem<D, Shape>& system, double a) {
 
 }  // namespace detail
 
-// w on every velocity field's XpicNodes.
+// w on every velocity field's XpicNodes, and in its iterate's velocity
+// the filtered grid velocity u_I = v_I^L+ - w_I, from which g2p takes the
+// particles' new velocity and, under USL, their velocity gradient.
 template <int D, class Shape>
 void xpic_correction(DiscreteSystem<D, Shape>& system) {
   const int m = system.xpic_order;
@@ -104,6 +106,13 @@ void xpic_correction(DiscreteSystem<D, Shape>& system) {
     binomial = binomial * (m - k + 1) / k;
     detail::xpic_map<D, Shape, false>(system);
     detail::xpic_iterate<D, Shape, false>(system, k % 2 == 0 ? binomial : -binomial);
+  }
+  for (int k = 0; k < system.field_count(); ++k) {
+    const NodalField<D>& field = system.field(k);
+    XpicNodes<D>& x = system.xpic[k];
+    for_each_active_node(system.grid, [&](std::size_t n, const Index<D>&) {
+      for (int d = 0; d < D; ++d) x.iterate.velocity[d][n] = field.velocity[d][n] - x.correction[d][n];
+    });
   }
 }
 
