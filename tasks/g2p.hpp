@@ -5,7 +5,8 @@
 //             APIC: v_p <- sum_I N_Ip v_I, C_p <- sum_I v_I (x) G_Ip
 //             (Stencil's StencilFactor::affine) [Jiang 2015];
 //             XPIC(m): v_p <- sum_I N_Ip (v_I - w_I) (tasks/xpic.hpp),
-//             x_p as above, and under USL L_p from v_I - w_I too;
+//             x_p as above, and under USL L_p from v_I - w_I too
+//             (from v_I in a scene with contact);
 //             docs/theory/transfers.md.
 // g2p_stress: L_p = sum_I v_I (x) dN_Ip, d eps = sym(L_p) dt, the material
 //             update sigma(d eps), eps += d eps, V_p *= 1 + tr(d eps)
@@ -235,6 +236,10 @@ template <int D, class Shape, bool Motion, bool Stress, bool Apic = false, bool 
 void g2p(DiscreteSystem<D, Shape>& system) {
   constexpr bool apic = Motion && Apic;
   const bool xpic = Motion && !Apic && system.velocity_update == VelocityUpdate::xpic;
+  // XPIC takes v_p, and under USL L_p, from its filtered velocity u; with
+  // contact, whose laws correct v^L+ but not the recursion's w, L_p and
+  // v_p from v^L+ - w as the sums of v^L+ and w (docs/theory/transfers.md).
+  const bool xpic_filtered = xpic && !system.contact;
   // APIC's G_Ip is the gradient itself where the shape function has no D_p.
   constexpr bool affine_is_gradient = Shape::apic_inertia == 0.0;
   // APIC with held nodes (linear shape functions, tasks/grid_update.hpp
@@ -281,7 +286,7 @@ void g2p(DiscreteSystem<D, Shape>& system) {
       for (int d = 0; d < D; ++d) {
         if constexpr (from_momentum) momentum[d] = field.momentum[d].data();
         // XPIC: the filtered velocity u = v^L+ - w, and w.
-        velocity[d] = xpic ? system.xpic[b.field].iterate.velocity[d].data() : field.velocity[d].data();
+        velocity[d] = xpic_filtered ? system.xpic[b.field].iterate.velocity[d].data() : field.velocity[d].data();
         velocity_change[d] = xpic ? system.xpic[b.field].correction[d].data() : field.velocity_change[d].data();
       }
       using Affine = Stencil<D, Shape, true, StencilFactor::affine>;
@@ -334,7 +339,7 @@ void g2p(DiscreteSystem<D, Shape>& system) {
         if constexpr (Stress) energy.expansion_work += update_stress(p, L, hoop);
         if constexpr (Motion) {
           // XPIC moves the particles with v^L+ = u + w.
-          const Vec<D> x_new = b.x[p] + dt * (xpic ? Vec<D>(v_grid + dv) : v_grid);
+          const Vec<D> x_new = b.x[p] + dt * (xpic_filtered ? Vec<D>(v_grid + dv) : v_grid);
           // A particle must stay where its stencil has nodes and may cross at
           // most one cell per step; otherwise it is not moved and the step
           // fails. (The range is checked on the grid coordinate before it
@@ -358,7 +363,7 @@ void g2p(DiscreteSystem<D, Shape>& system) {
           if constexpr (apic) {
             v_new = v_grid;
           } else if (xpic) {
-            v_new = v_grid;
+            v_new = xpic_filtered ? v_grid : Vec<D>(v_grid - dv);
           } else {
             v_new = a * (b.v[p] + dv) + (1.0 - a) * v_grid;
           }

@@ -93,9 +93,10 @@ void xpic_iterate(DiscreteSystem<D, Shape>& system, double a) {
 
 }  // namespace detail
 
-// w on every velocity field's XpicNodes, and in its iterate's velocity
-// the filtered grid velocity u_I = v_I^L+ - w_I, from which g2p takes the
-// particles' new velocity and, under USL, their velocity gradient.
+// w on every velocity field's XpicNodes, and (without contact) in its
+// iterate's velocity the filtered grid velocity u_I = v_I^L+ - w_I, from
+// which g2p takes the particles' new velocity and, under USL, their
+// velocity gradient.
 template <int D, class Shape>
 void xpic_correction(DiscreteSystem<D, Shape>& system) {
   const int m = system.xpic_order;
@@ -107,6 +108,7 @@ void xpic_correction(DiscreteSystem<D, Shape>& system) {
     detail::xpic_map<D, Shape, false>(system);
     detail::xpic_iterate<D, Shape, false>(system, k % 2 == 0 ? binomial : -binomial);
   }
+  if (system.contact) return;  // g2p takes v^L+ and w there (tasks/g2p.hpp)
   for (int k = 0; k < system.field_count(); ++k) {
     const NodalField<D>& field = system.field(k);
     XpicNodes<D>& x = system.xpic[k];

@@ -118,6 +118,10 @@ TEST_CASE("a block on a rigid 30 degree incline slides as g (sin - mu cos) t^2 /
   double moved = 1.0;
   CHECK(incline_error(file, {"contacts[0].friction=0.7"}, &moved) < 0.01);
   CHECK(std::abs(moved) < 0.01 * 0.01);
+  // With XPIC(5) it sticks too (0.72 % of a cell): with contact XPIC keeps
+  // its strain update from v^L+; from its filtered velocity, which the
+  // contact laws do not correct, the block crept 7.9 cells.
+  CHECK(incline_error(file, {"contacts[0].friction=0.7", "analysis.velocity_update=xpic"}) < 0.01);
   // Twice as fine (cells of 5 mm, 2 x 2 particles each).
   const std::vector<std::string> fine = {"grid.cell_size=0.005", "grid.cells=[600, 44]"};
   auto with = [&](const std::string& friction) {
