@@ -6,7 +6,7 @@
 //             (Stencil's StencilFactor::affine) [Jiang 2015];
 //             XPIC(m): v_p <- sum_I N_Ip (v_I - w_I) (tasks/xpic.hpp),
 //             x_p as above, and under USL L_p from v_I - w_I too
-//             (from v_I in a scene with contact);
+//             (from v_I in a scene with contact or walls);
 //             docs/theory/transfers.md.
 // g2p_stress: L_p = sum_I v_I (x) dN_Ip, d eps = sym(L_p) dt, the material
 //             update sigma(d eps), eps += d eps, V_p *= 1 + tr(d eps)
@@ -236,10 +236,9 @@ template <int D, class Shape, bool Motion, bool Stress, bool Apic = false, bool 
 void g2p(DiscreteSystem<D, Shape>& system) {
   constexpr bool apic = Motion && Apic;
   const bool xpic = Motion && !Apic && system.velocity_update == VelocityUpdate::xpic;
-  // XPIC takes v_p, and under USL L_p, from its filtered velocity u; with
-  // contact, whose laws correct v^L+ but not the recursion's w, L_p and
-  // v_p from v^L+ - w as the sums of v^L+ and w (docs/theory/transfers.md).
-  const bool xpic_filtered = xpic && !system.contact;
+  // XPIC takes v_p, and under USL L_p, from its filtered velocity u
+  // (tasks/xpic.hpp, docs/theory/transfers.md).
+  const bool xpic_filtered = xpic && xpic_filters_strain(system);
   // APIC's G_Ip is the gradient itself where the shape function has no D_p.
   constexpr bool affine_is_gradient = Shape::apic_inertia == 0.0;
   // APIC with held nodes (linear shape functions, tasks/grid_update.hpp

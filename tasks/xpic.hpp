@@ -23,6 +23,15 @@
 
 namespace flowmpm {
 
+// Whether g2p takes XPIC's filtered velocity u for the particles' velocity
+// and strain: not where contact laws or walls correct v^L+ after the grid
+// update, which the recursion's w knows nothing of (there v_p comes from
+// v^L+ - w as two sums, and L_p from v^L+).
+template <int D, class Shape>
+bool xpic_filters_strain(const DiscreteSystem<D, Shape>& system) {
+  return !system.contact && system.walls.empty();
+}
+
 namespace detail {
 
 // The iterate's momentum sum_p N_Ip m_p v_p: with the particles' velocities
@@ -93,7 +102,7 @@ void xpic_iterate(DiscreteSystem<D, Shape>& system, double a) {
 
 }  // namespace detail
 
-// w on every velocity field's XpicNodes, and (without contact) in its
+// w on every velocity field's XpicNodes, and (xpic_filters_strain) in its
 // iterate's velocity the filtered grid velocity u_I = v_I^L+ - w_I, from
 // which g2p takes the particles' new velocity and, under USL, their
 // velocity gradient.
@@ -108,7 +117,7 @@ void xpic_correction(DiscreteSystem<D, Shape>& system) {
     detail::xpic_map<D, Shape, false>(system);
     detail::xpic_iterate<D, Shape, false>(system, k % 2 == 0 ? binomial : -binomial);
   }
-  if (system.contact) return;  // g2p takes v^L+ and w there (tasks/g2p.hpp)
+  if (!xpic_filters_strain(system)) return;
   for (int k = 0; k < system.field_count(); ++k) {
     const NodalField<D>& field = system.field(k);
     XpicNodes<D>& x = system.xpic[k];

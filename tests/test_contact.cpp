@@ -122,6 +122,9 @@ TEST_CASE("a block on a rigid 30 degree incline slides as g (sin - mu cos) t^2 /
   // its strain update from v^L+; from its filtered velocity, which the
   // contact laws do not correct, the block crept 7.9 cells.
   CHECK(incline_error(file, {"contacts[0].friction=0.7", "analysis.velocity_update=xpic"}) < 0.01);
+  // And on a wall (10 cells of creep from u; 0.72 % of a cell).
+  CHECK(incline_error("contact/incline_block_wall.toml",
+                      {"node_sets[0].wall.friction=0.7", "analysis.velocity_update=xpic"}) < 0.01);
   // Twice as fine (cells of 5 mm, 2 x 2 particles each).
   const std::vector<std::string> fine = {"grid.cell_size=0.005", "grid.cells=[600, 44]"};
   auto with = [&](const std::string& friction) {
