@@ -71,11 +71,15 @@ const char* const coulomb_contact =
 
 // `update`: the velocity update instead of the blend.
 template <int D, class Shape = LinearShape>
-void check_dimension(const std::string& extra = "", const std::string& update = "") {
+void check_dimension(const std::string& extra = "", const std::string& update = "", const std::string& scheme = "") {
   std::string text = impact_case(D) + extra;
   if (!update.empty()) {
     const std::string blend = "velocity_update = \"blend\"\nflip_fraction = 0.95";
     text.replace(text.find(blend), blend.size(), "velocity_update = \"" + update + "\"");
+  }
+  if (!scheme.empty()) {
+    const std::string musl = "scheme = \"musl\"";
+    text.replace(text.find(musl), musl.size(), "scheme = \"" + scheme + "\"");
   }
   const Case c = testing::case_from_text("impact" + std::to_string(D) + "d", text,
                                          {std::string("analysis.shape_function=") + Shape::name});
@@ -123,6 +127,10 @@ TEST_CASE("APIC and XPIC(5): bit for bit too, with contact") {
   check_dimension<2, QuadraticBSpline>("", "apic");
   check_dimension<2, LinearShape>(coulomb_contact, "apic");
   check_dimension<2, GimpShape>(coulomb_contact, "xpic");
+  // Without contact XPIC's particles take its filtered velocity u, and
+  // under USL their strain too.
+  check_dimension<2, LinearShape>("", "xpic");
+  check_dimension<2, LinearShape>("", "xpic", "usl");
 }
 TEST_CASE("uGIMP and B-splines (wider blocks): bit for bit too") {
   check_dimension<2, GimpShape>();
