@@ -231,8 +231,9 @@ template <int Count>
 // `Apic`: APIC's velocity update; otherwise FLIP, PIC and their blend
 // (flip_fraction), or XPIC's (a branch per particle, not a second copy of
 // the pass and of its material updates). `Hoop`: axisymmetric (the hoop
-// rate, and no particle onto the axis).
-template <int D, class Shape, bool Motion, bool Stress, bool Apic = false, bool Hoop = false>
+// rate, and no particle onto the axis). `HeldShare`: PIC, the blend or
+// XPIC where nodes may be held (below).
+template <int D, class Shape, bool Motion, bool Stress, bool Apic = false, bool Hoop = false, bool HeldShare = false>
 void g2p(DiscreteSystem<D, Shape>& system) {
   constexpr bool apic = Motion && Apic;
   const bool xpic = Motion && !Apic && system.velocity_update == VelocityUpdate::xpic;
@@ -241,11 +242,15 @@ void g2p(DiscreteSystem<D, Shape>& system) {
   const bool xpic_filtered = xpic && xpic_filters_strain(system);
   // APIC's G_Ip is the gradient itself where the shape function has no D_p.
   constexpr bool affine_is_gradient = Shape::apic_inertia == 0.0;
-  // APIC with held nodes (linear shape functions, tasks/grid_update.hpp
-  // held_node): v_p and x_p from p_I / m_I, which a held node updates too,
-  // so that momentum is kept and no torque is lost; C_p from the held
-  // velocity, bounded where N_Ip vanishes.
-  constexpr bool from_momentum = apic && Shape::gradient_jumps;
+  // Held nodes (linear shape functions, tasks/grid_update.hpp held_node)
+  // keep their start-of-step velocity v_I for the stress update, the
+  // positions and APIC's C_p (bounded where N_Ip vanishes), but their
+  // momentum p_I takes the whole f_I dt. The velocity a particle carries
+  // away takes the held nodes' share sum_I N_Ip (p_I / m_I - v_I) too (APIC
+  // and its positions: v_p = sum_I N_Ip p_I / m_I), so that momentum is kept
+  // and no torque is lost: PIC and XPIC without it dropped the held nodes'
+  // f_I dt (tests/test_transfers.cpp). FLIP's increment is whole already.
+  constexpr bool held_share = Motion && (Apic || HeldShare) && Shape::gradient_jumps;
   using Layout = BlockLayout<D, Shape>;
   const auto& grid = system.grid;
   const double a = system.flip_fraction, dt = system.dt;
@@ -281,9 +286,13 @@ void g2p(DiscreteSystem<D, Shape>& system) {
       const double* velocity[D];
       const double* velocity_change[D];
       [[maybe_unused]] const double* momentum[D];
+      [[maybe_unused]] const double* field_velocity[D];
       [[maybe_unused]] const double* const mass = field.mass.data();
       for (int d = 0; d < D; ++d) {
-        if constexpr (from_momentum) momentum[d] = field.momentum[d].data();
+        if constexpr (held_share) {
+          momentum[d] = field.momentum[d].data();
+          field_velocity[d] = field.velocity[d].data();
+        }
         // XPIC: the filtered velocity u = v^L+ - w, and w.
         velocity[d] = xpic_filtered ? system.xpic[b.field].iterate.velocity[d].data() : field.velocity[d].data();
         velocity_change[d] = xpic ? system.xpic[b.field].correction[d].data() : field.velocity_change[d].data();
@@ -299,6 +308,7 @@ void g2p(DiscreteSystem<D, Shape>& system) {
         // added. v_sum and L: of v^L+, or of XPIC's u; dv_sum: FLIP's
         // velocity change, or XPIC's correction w.
         NodePair v_sum[D] = {}, dv_sum[D] = {}, L_sum[D][D] = {}, C_sum[D][D] = {};
+        [[maybe_unused]] NodePair held_sum[D] = {};  // the held nodes' share
         [[maybe_unused]] NodePair hoop_sum = {};  // v_r at the particle, with L's velocities
         s.for_each_node_pair([&]<int Count>(int line, int k, std::size_t n) {
           const auto w = s.template pair_weights<Count>(line, k);
@@ -311,11 +321,10 @@ void g2p(DiscreteSystem<D, Shape>& system) {
           for (int i = 0; i < D; ++i) {
             const NodePair v = load_nodes<Count>(velocity[i] + n);
             if constexpr (Motion) {
-              if constexpr (from_momentum) {
-                v_sum[i] += N * momentum_velocity<Count>(momentum[i] + n, mass + n);
-              } else {
-                v_sum[i] += N * v;
-              }
+              v_sum[i] += N * v;
+              if constexpr (held_share)
+                held_sum[i] += N * (momentum_velocity<Count>(momentum[i] + n, mass + n) -
+                                    load_nodes<Count>(field_velocity[i] + n));
               if constexpr (!apic) dv_sum[i] += N * load_nodes<Count>(velocity_change[i] + n);
             }
             if constexpr (Stress)
@@ -326,19 +335,21 @@ void g2p(DiscreteSystem<D, Shape>& system) {
               for (int j = 0; j < D; ++j) C_sum[i][j] += v * G.dN[j];
           }
         });
-        Vec<D> v_grid, dv;
+        Vec<D> v_grid, dv, held = Vec<D>::Zero();
         double L[D][D];  // velocity gradient
         for (int i = 0; i < D; ++i) {
           v_grid[i] = sum(v_sum[i]);
           dv[i] = sum(dv_sum[i]);
+          if constexpr (held_share) held[i] = sum(held_sum[i]);
           for (int j = 0; j < D; ++j) L[i][j] = sum(L_sum[i][j]);
         }
         [[maybe_unused]] double hoop = 0.0;  // v_r / r
         if constexpr (Hoop && Stress) hoop = sum(hoop_sum) / b.x[p][0];
         if constexpr (Stress) energy.expansion_work += update_stress(p, L, hoop);
         if constexpr (Motion) {
-          // XPIC moves the particles with v^L+ = u + w.
-          const Vec<D> x_new = b.x[p] + dt * (xpic_filtered ? Vec<D>(v_grid + dv) : v_grid);
+          // XPIC moves the particles with v^L+ = u + w; APIC with p_I / m_I.
+          const Vec<D> x_new =
+              b.x[p] + dt * (apic ? Vec<D>(v_grid + held) : xpic_filtered ? Vec<D>(v_grid + dv) : v_grid);
           // A particle must stay where its stencil has nodes and may cross at
           // most one cell per step; otherwise it is not moved and the step
           // fails. (The range is checked on the grid coordinate before it
@@ -360,11 +371,11 @@ void g2p(DiscreteSystem<D, Shape>& system) {
           if constexpr (Hoop) inside = inside && x_new[0] > 0.0;  // r > 0: off the axis
           Vec<D> v_new;
           if constexpr (apic) {
-            v_new = v_grid;
+            v_new = v_grid + held;
           } else if (xpic) {
-            v_new = xpic_filtered ? v_grid : Vec<D>(v_grid - dv);
+            v_new = (xpic_filtered ? v_grid : Vec<D>(v_grid - dv)) + held;
           } else {
-            v_new = a * (b.v[p] + dv) + (1.0 - a) * v_grid;
+            v_new = a * (b.v[p] + dv) + (1.0 - a) * (v_grid + held);
           }
           if (!inside || !one_cell || !v_new.allFinite()) {
             system.flags.fail("a particle at " + position_text<D>(b.x[p]) + " would move to " +
@@ -414,6 +425,12 @@ void g2p_with_motion(DiscreteSystem<D, Shape>& system) {
     return;
   }
   if (system.velocity_update == VelocityUpdate::xpic) xpic_correction(system);
+  if constexpr (Shape::gradient_jumps) {
+    if (system.velocity_update != VelocityUpdate::flip && !system.field(0).stiffness.empty()) {  // nodes may be held
+      g2p<D, Shape, true, Stress, false, Hoop, true>(system);
+      return;
+    }
+  }
   g2p<D, Shape, true, Stress, false, Hoop>(system);
 }
 
