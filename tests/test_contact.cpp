@@ -1,7 +1,7 @@
 // Contact between bodies (tasks/contact.hpp, docs/validation/contact.md):
 // the shipped cases of configs/contact/ against rigid-body mechanics
-// (a block sliding or sticking on a 30 degree incline, on a rigid plane and
-// on a deformable slab), Sulsky's disks with frictionless contact against
+// (a block sliding or sticking on a 30 degree incline, on a rigid plane, a
+// wall and a deformable slab, at two resolutions), Sulsky's disks with frictionless contact against
 // the same disks in one velocity field, a 3D block bouncing on a rigid
 // floor, two bonded blocks whose interface carries D [u] per unit area,
 // two poplar strands bonded by an imperfect interface in lap shear against
@@ -105,50 +105,64 @@ bodies = ["a", "b"]
 law = "interface"
 )";
 
-}  // namespace
+// The incline cases' resolutions: 10 mm cells (the case files) and 5 mm.
+const std::vector<std::string> five_mm = {"grid.cell_size=0.005", "grid.cells=[600, 44]"};
 
-TEST_CASE("a block on a rigid 30 degree incline slides as g (sin - mu cos) t^2 / 2, and sticks when mu > tan 30") {
-  // 2 % (the issue's tolerance) where the block slides freely or with
-  // mu = 0.2; it starts in the infinite slope's equilibrium, and the
-  // elastic block's small vibrations cost friction only where it nearly
-  // sticks. mu = 0.7 > tan 30: the error is the drift in cells, 1 %.
-  const std::string file = "contact/incline_block_rigid.toml";
-  CHECK(incline_error(file, {"contacts[0].friction=0.0"}) < 0.02);
-  CHECK(incline_error(file, {"contacts[0].friction=0.2"}) < 0.02);
-  double moved = 1.0;
-  CHECK(incline_error(file, {"contacts[0].friction=0.7"}, &moved) < 0.01);
-  CHECK(std::abs(moved) < 0.01 * 0.01);
-  // With XPIC(5) it sticks too (0.72 % of a cell): with contact XPIC keeps
-  // its strain update from v^L+; from its filtered velocity, which the
-  // contact laws do not correct, the block crept 7.9 cells.
-  CHECK(incline_error(file, {"contacts[0].friction=0.7", "analysis.velocity_update=xpic"}) < 0.01);
-  // And on a wall (10 cells of creep from u; 0.72 % of a cell).
-  CHECK(incline_error("contact/incline_block_wall.toml",
-                      {"node_sets[0].wall.friction=0.7", "analysis.velocity_update=xpic"}) < 0.01);
-  // Twice as fine (cells of 5 mm, 2 x 2 particles each).
-  const std::vector<std::string> fine = {"grid.cell_size=0.005", "grid.cells=[600, 44]"};
-  auto with = [&](const std::string& friction) {
-    std::vector<std::string> o{friction};
-    o.insert(o.end(), fine.begin(), fine.end());
-    return o;
-  };
-  CHECK(incline_error(file, with("contacts[0].friction=0.2")) < 0.02);
-  // Sticking at 5 mm cells the block creeps 0.13 mm (2.7 % of a cell, the
-  // issue asks 1 %: docs/validation/contact.md): bounded at 5 %, so that a
-  // creep that grows is caught.
-  CHECK(incline_error(file, with("contacts[0].friction=0.7")) < 0.05);
+// `overrides` with `more` appended.
+std::vector<std::string> with(std::vector<std::string> overrides, const std::vector<std::string>& more) {
+  overrides.insert(overrides.end(), more.begin(), more.end());
+  return overrides;
 }
 
-TEST_CASE("mu = 0.5 on the incline: the slide against the closed form, with the cause of its excess stated") {
-  // mu = 0.5 leaves a net 0.657 m/s^2 of 4.905: where the elastic block's
-  // vibration briefly lets a node stick, friction falls short of mu N, and
-  // the block slides a few per cent too far (docs/validation/contact.md).
-  // Bounded at 12 %, the measured excess with room for the platform's last
-  // bits; the sign is asserted: never short of the closed form.
-  double moved = 0.0;
-  const double error = incline_error("contact/incline_block_rigid.toml", {"contacts[0].friction=0.5"}, &moved);
-  CHECK(error < 0.12);
-  CHECK(moved > 0.328);
+// The incline block's tolerances: 2 % of the closed form's displacement
+// where it slides (the issue's), and 1 % of a cell of creep where it sticks
+// (mu = 0.7 > tan 30; incline_error is then the drift in cells). Where it
+// slides at most 0.33 m (mu >= 0.5) the floor or slab is cut at x = 0.8 m,
+// which changes no digit of the result and halves the run.
+void check_incline(const std::string& file, const std::string& friction_key, const std::string& floor_end,
+                   const std::vector<std::string>& mus, const std::vector<std::string>& more = {}) {
+  for (const std::string& mu : mus) {
+    CAPTURE(mu);
+    std::vector<std::string> o = with({friction_key + "=" + mu}, more);
+    if (std::stod(mu) >= 0.5 && !floor_end.empty()) o.push_back(floor_end + "=[0.8, 0.0]");
+    double moved = 1.0;
+    CHECK(incline_error(file, o, &moved) < (std::stod(mu) > 0.577 ? 0.01 : 0.02));
+  }
+}
+
+}  // namespace
+
+// The closed form is a rigid block's. The block is stiff (E = 10 MPa) and
+// its velocity update PIC: an elastic block sliding with friction vibrates
+// (the friction at its base drives it), and where the vibration lets a node
+// stick friction falls short of mu N. With FLIP and E = 1 MPa it slid 10.8 %
+// (10 mm) and 41 % (5 mm) too far at mu = 0.5; with FLIP and E = 10 MPa 3.5 %
+// and 10 %, and on the slab it crept 1.5 cells at mu = 0.7
+// (docs/validation/contact.md).
+TEST_CASE("incline: a block on a rigid plane slides as g (sin - mu cos) t^2 / 2, and sticks when mu > tan 30") {
+  const std::string file = "contact/incline_block_rigid.toml";
+  check_incline(file, "contacts[0].friction", "bodies[1].max", {"0.0", "0.2", "0.5", "0.7"});
+  // With XPIC(5) it sticks too: with contact XPIC keeps its strain update
+  // from v^L+; from its filtered velocity, which the contact laws do not
+  // correct, the block crept 7.9 cells.
+  check_incline(file, "contacts[0].friction", "bodies[1].max", {"0.7"}, {"analysis.velocity_update=xpic"});
+}
+
+TEST_CASE("incline: a block on a wall slides and sticks as on the rigid plane, at 10 and 5 mm cells") {
+  const std::string file = "contact/incline_block_wall.toml";
+  check_incline(file, "node_sets[0].wall.friction", "", {"0.0", "0.2", "0.5", "0.7"});
+  check_incline(file, "node_sets[0].wall.friction", "", {"0.5", "0.7"}, five_mm);
+  // XPIC(5) (10 cells of creep with its strain from u).
+  check_incline(file, "node_sets[0].wall.friction", "", {"0.7"}, {"analysis.velocity_update=xpic"});
+}
+
+TEST_CASE("incline: a block on a deformable slab slides and sticks as on the rigid plane, at 10 and 5 mm cells") {
+  // The slab under the block starts with the block's weight on it (a
+  // geostatic surcharge); without it the slab took the weight as an impact
+  // and the block crept 1.5 cells at mu = 0.7.
+  const std::string file = "contact/incline_block_slab.toml";
+  check_incline(file, "contacts[0].friction", "bodies[3].max", {"0.0", "0.2", "0.5", "0.7"});
+  check_incline(file, "contacts[0].friction", "bodies[3].max", {"0.7"}, five_mm);
 }
 
 TEST_CASE("a disk on the rigid incline slips as a block below mu = tan(30) / 3, and rolls above it") {
@@ -182,18 +196,18 @@ TEST_CASE("a rigid flat punch in a von Mises block: Prandtl's limit pressure, co
   CHECK(error[2] < error[1]);
 }
 
-TEST_CASE("a contact group: two halves of the block in one field slide as the block") {
+TEST_CASE("incline: a contact group, two halves of the block in one field, slides as the block") {
   // The block of incline_block_rigid.toml as two bodies side by side, a
   // contact group in Coulomb contact (mu = 0.2) with the plane: they share
   // one velocity field, stick to each other and slide as one body.
   std::ifstream file(testing::config("contact/incline_block_rigid.toml"));
   std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-  const std::string block = "name = \"block\"\nmaterial = \"soft\"\nparticles_per_cell = 2\nmin = [0.0, 0.0]\nmax = [0.2, 0.1]\n";
+  const std::string block = "name = \"block\"\nmaterial = \"elastic\"\nparticles_per_cell = 2\nmin = [0.0, 0.0]\nmax = [0.2, 0.1]\n";
   REQUIRE(text.find(block) != std::string::npos);
   text.replace(text.find(block), block.size(),
-               "name = \"left\"\nmaterial = \"soft\"\nparticles_per_cell = 2\nmin = [0.0, 0.0]\nmax = [0.1, 0.1]\n"
+               "name = \"left\"\nmaterial = \"elastic\"\nparticles_per_cell = 2\nmin = [0.0, 0.0]\nmax = [0.1, 0.1]\n"
                "initial_stress = { type = \"geostatic\", k0 = 0.4286 }\n[[bodies]]\n"
-               "name = \"right\"\nmaterial = \"soft\"\nparticles_per_cell = 2\nmin = [0.1, 0.0]\nmax = [0.2, 0.1]\n");
+               "name = \"right\"\nmaterial = \"elastic\"\nparticles_per_cell = 2\nmin = [0.1, 0.0]\nmax = [0.2, 0.1]\n");
   text.replace(text.find("bodies = [\"block\", \"floor\"]"), 27, "bodies = [\"halves\", \"floor\"]");
   text.replace(text.find("body = \"block\""), 14, "body = \"left\"");
   text += "\n[[contact_groups]]\nname = \"halves\"\nbodies = [\"left\", \"right\"]\n";
@@ -204,8 +218,7 @@ TEST_CASE("a contact group: two halves of the block in one field slide as the bl
   CHECK(s.errors.at("displacement") < 0.02);
 }
 
-TEST_CASE("a wall: the block slides on a node plane that holds only in compression, and a dropped block bounces") {
-  CHECK(incline_error("contact/incline_block_wall.toml", {}) < 0.02);
+TEST_CASE("a wall holds only in compression: a block dropped on it bounces") {
   // The 3D drop of configs/hard/drop_3d.toml on a frictionless wall: held,
   // the block stays on the plane; on the wall it leaves it again.
   const Case c = read_case(testing::config("contact/drop_3d_wall.toml"));
@@ -222,10 +235,6 @@ TEST_CASE("a wall: the block slides on a node plane that holds only in compressi
   MESSAGE("3D drop on a wall: largest upward velocity " << highest_rise << " m/s");
   CHECK(highest_rise > 0.5);
   CHECK(least_force >= 0.0);  // it never pulled
-}
-
-TEST_CASE("a block on a deformable slab (Coulomb, mu = 0.2) slides as on the rigid plane") {
-  CHECK(incline_error("contact/incline_block_slab.toml", {}) < 0.02);
 }
 
 TEST_CASE("Sulsky's disks with frictionless contact: the normal force never pulls, and the disks part") {
@@ -407,7 +416,7 @@ TEST_CASE("bad contact input is rejected with the file, line and key") {
   }
   SUBCASE("a rigid body with a material") {
     std::string text = two_blocks + contact;
-    text.replace(text.find("rigid = "), 0, "material = \"soft\"\n");
+    text.replace(text.find("rigid = "), 0, "material = \"elastic\"\n");
     const std::string m = rejection("rigid_material", text);
     CHECK(m.find("bodies[1].material: expected nothing: a rigid body has no material") != std::string::npos);
   }

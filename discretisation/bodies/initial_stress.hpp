@@ -12,7 +12,12 @@
 //              (a body on a slope) adds the shear of the infinite slope,
 //              sigma_hz = rho g_h (top - z), which with sigma_v balances
 //              gravity and leaves the top free ([Lambe 1969], the infinite
-//              slope); no shear otherwise.
+//              slope); no shear otherwise. A `surcharge` q (Pa, default 0):
+//              the weight per unit area of what rests on the top (a
+//              footing, a block on a slope), sigma_v = -(q + rho |g_z|
+//              (top - z)), and on a slope its shear q g_h / |g_z| too: the
+//              top carries that load from t = 0 instead of taking it as an
+//              impact.
 // Adding one is one new type and one line in the variant below.
 #pragma once
 #include <algorithm>
@@ -58,6 +63,7 @@ struct UniformStress {
 struct GeostaticStress {
   static constexpr const char* type_name = "geostatic";
   double k0 = 0.0;
+  double surcharge = 0.0;     // Pa, the vertical load on the top
   int vertical = 1;           // the axis of gravity's largest component
   double weight = 0.0;        // |g_vertical| (m/s^2)
   Vec3 gravity{};             // m/s^2, for the slope's shear
@@ -68,6 +74,8 @@ struct GeostaticStress {
     GeostaticStress g;
     g.k0 = t.number("k0");
     t.require(g.k0 >= 0.0, "k0", "a coefficient of earth pressure at rest K0 >= 0");
+    g.surcharge = t.number_or("surcharge", 0.0);
+    t.require(g.surcharge >= 0.0, "surcharge", "a load on the body's top >= 0 in Pa (the weight per unit area resting on it)");
     for (int d = 0; d < c.dimension; ++d) {
       if (std::abs(c.gravity[d]) > g.weight) g.vertical = d, g.weight = std::abs(c.gravity[d]);
     }
@@ -81,7 +89,7 @@ struct GeostaticStress {
   // At x, for density rho (kg/m^3) and the body's top (m, along the vertical).
   Voigt at(const Vec3& x, double rho, double top) const {
     Voigt s{};
-    const double vertical_stress = -rho * weight * (top - x[vertical]);
+    const double vertical_stress = -(rho * weight * (top - x[vertical]) + surcharge);
     for (int d = 0; d < 3; ++d) {
       const bool carried = d < dimension || (dimension == 2 && !plane_stress);
       if (d == vertical) {
@@ -90,7 +98,7 @@ struct GeostaticStress {
         s[d] = k0 * vertical_stress;
       }
       if (d != vertical && d < dimension && gravity[d] != 0.0)
-        s[voigt_slot(d, vertical)] = rho * gravity[d] * (top - x[vertical]);
+        s[voigt_slot(d, vertical)] = rho * gravity[d] * (top - x[vertical]) + surcharge * gravity[d] / weight;
     }
     return s;
   }
