@@ -465,6 +465,21 @@ TEST_CASE("initial stress: uniform, and geostatic from gravity and depth, which 
       CHECK(b.stress[p][5] == 0.0);
     }
   }
+  // A surcharge q on the top, on a slope (gravity tilted 30 degrees towards
+  // x): sigma_v = -(q + rho |g_y| (top - y)), the shear g_x (q / |g_y| +
+  // rho (top - y)), the infinite slope's with the load's weight on it.
+  {
+    const std::string loaded = column + "initial_stress = { type = \"geostatic\", k0 = 0.5, surcharge = 800.0 }\n";
+    const Sim2 slope = build("geostatic_surcharge", case_2d(loaded, "", "gravity = [5.0, -8.660254037844386]\n"));
+    for (const auto& b : slope.system().batches) {
+      for (std::size_t p = 0; p < b.size(); ++p) {
+        const double depth = 0.7 - b.x[p][1], gy = 8.660254037844386;
+        CHECK(b.stress[p][1] == doctest::Approx(-(800.0 + 1000.0 * gy * depth)).epsilon(1e-12));
+        CHECK(b.stress[p][0] == doctest::Approx(-0.5 * (800.0 + 1000.0 * gy * depth)).epsilon(1e-12));
+        CHECK(b.stress[p][5] == doctest::Approx(5.0 * (800.0 / gy + 1000.0 * depth)).epsilon(1e-12));
+      }
+    }
+  }
   // Gravity switched on: without initial stress the column sinks and
   // oscillates about its static settlement (top: rho g H^2 / (2 M), M the
   // constrained modulus); with the geostatic stress it is already in
@@ -494,6 +509,12 @@ TEST_CASE("bad initial stress is rejected with the key and what was expected") {
     const std::string geostatic = column + "initial_stress = { type = \"geostatic\", k0 = 0.5 }\n";
     const std::string m = rejection("geostatic_no_g", case_2d(geostatic));
     CHECK(m.find("bodies[0].initial_stress.type: expected a case with gravity (analysis.gravity)") != std::string::npos);
+  }
+  SUBCASE("a negative surcharge") {
+    const std::string m = rejection(
+        "negative_surcharge",
+        case_2d(column + "initial_stress = { type = \"geostatic\", k0 = 0.5, surcharge = -1.0 }\n", "", gravity));
+    CHECK(m.find("bodies[0].initial_stress.surcharge: expected a load on the body's top >= 0 in Pa") != std::string::npos);
   }
   SUBCASE("a stress component the analysis does not carry") {
     const std::string m = rejection(
