@@ -335,7 +335,8 @@ void g2p(DiscreteSystem<D, Shape>& system) {
               for (int j = 0; j < D; ++j) C_sum[i][j] += v * G.dN[j];
           }
         });
-        Vec<D> v_grid, dv, held = Vec<D>::Zero();
+        Vec<D> v_grid, dv;
+        [[maybe_unused]] Vec<D> held;
         double L[D][D];  // velocity gradient
         for (int i = 0; i < D; ++i) {
           v_grid[i] = sum(v_sum[i]);
@@ -347,9 +348,11 @@ void g2p(DiscreteSystem<D, Shape>& system) {
         if constexpr (Hoop && Stress) hoop = sum(hoop_sum) / b.x[p][0];
         if constexpr (Stress) energy.expansion_work += update_stress(p, L, hoop);
         if constexpr (Motion) {
+          // The grid velocity a particle carries away, with the held nodes' share.
+          Vec<D> v_carried = v_grid;
+          if constexpr (held_share) v_carried += held;
           // XPIC moves the particles with v^L+ = u + w; APIC with p_I / m_I.
-          const Vec<D> x_new =
-              b.x[p] + dt * (apic ? Vec<D>(v_grid + held) : xpic_filtered ? Vec<D>(v_grid + dv) : v_grid);
+          const Vec<D> x_new = b.x[p] + dt * (apic ? v_carried : xpic_filtered ? Vec<D>(v_grid + dv) : v_grid);
           // A particle must stay where its stencil has nodes and may cross at
           // most one cell per step; otherwise it is not moved and the step
           // fails. (The range is checked on the grid coordinate before it
@@ -371,11 +374,11 @@ void g2p(DiscreteSystem<D, Shape>& system) {
           if constexpr (Hoop) inside = inside && x_new[0] > 0.0;  // r > 0: off the axis
           Vec<D> v_new;
           if constexpr (apic) {
-            v_new = v_grid + held;
+            v_new = v_carried;
           } else if (xpic) {
-            v_new = (xpic_filtered ? v_grid : Vec<D>(v_grid - dv)) + held;
+            v_new = xpic_filtered ? v_carried : Vec<D>(v_carried - dv);
           } else {
-            v_new = a * (b.v[p] + dv) + (1.0 - a) * (v_grid + held);
+            v_new = a * (b.v[p] + dv) + (1.0 - a) * v_carried;
           }
           if (!inside || !one_cell || !v_new.allFinite()) {
             system.flags.fail("a particle at " + position_text<D>(b.x[p]) + " would move to " +
