@@ -244,8 +244,6 @@ TEST_CASE("small-amplitude bar vibration: APIC and XPIC(5) converge as FLIP does
   }
 }
 
-
-
 TEST_CASE("a spinning block falling under gravity keeps gravity's momentum with every update, where USL holds light nodes") {
   // Linear shape functions under USL hold the nodes too light for their
   // stiffness at their start-of-step velocity (tasks/grid_update.hpp
