@@ -167,7 +167,7 @@ TEST_CASE("incline: a block on a deformable slab slides and sticks as on the rig
 
 TEST_CASE("a disk on the rigid incline slips as a block below mu = tan(30) / 3, and rolls above it") {
   // Slipping (mu = 0.1, 10 mm cells): 2 %, as the block. Rolling (mu = 0.3,
-  // 5 mm cells, the case file): the centre moves 2.5 % less than
+  // 5 mm cells, the case file): the centre moves 2.0 % less than
   // g sin t^2 / 3 (3.75 % at 10 mm): each node the disk rolls onto loses its
   // approach, a rolling resistance of the nodal contact
   // (docs/validation/contact.md); the issue asks 3 %.
