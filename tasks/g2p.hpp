@@ -246,11 +246,13 @@ void g2p(DiscreteSystem<D, Shape>& system) {
   // keep their start-of-step velocity v_I for the stress update, the
   // positions and APIC's C_p (bounded where N_Ip vanishes), but their
   // momentum p_I takes the whole f_I dt. The velocity a particle carries
-  // away takes the held nodes' share sum_I N_Ip (p_I / m_I - v_I) too (APIC
-  // and its positions: v_p = sum_I N_Ip p_I / m_I), so that momentum is kept
-  // and no torque is lost: PIC and XPIC without it dropped the held nodes'
-  // f_I dt (tests/test_transfers.cpp). FLIP's increment is whole already.
-  constexpr bool held_share = Motion && (Apic || HeldShare) && Shape::gradient_jumps;
+  // away takes that too, so that momentum is kept and no torque is lost:
+  // APIC's v_p and x_p are sum_I N_Ip p_I / m_I; PIC, the blend and XPIC
+  // add the held nodes' share sum_I N_Ip (p_I / m_I - v_I) to the velocity
+  // (without it they dropped the held nodes' f_I dt, tests/test_transfers.cpp).
+  // FLIP's increment is whole already.
+  constexpr bool apic_from_momentum = apic && Shape::gradient_jumps;
+  constexpr bool held_share = Motion && HeldShare && Shape::gradient_jumps;
   using Layout = BlockLayout<D, Shape>;
   const auto& grid = system.grid;
   const double a = system.flip_fraction, dt = system.dt;
@@ -289,10 +291,8 @@ void g2p(DiscreteSystem<D, Shape>& system) {
       [[maybe_unused]] const double* field_velocity[D];
       [[maybe_unused]] const double* const mass = field.mass.data();
       for (int d = 0; d < D; ++d) {
-        if constexpr (held_share) {
-          momentum[d] = field.momentum[d].data();
-          field_velocity[d] = field.velocity[d].data();
-        }
+        if constexpr (apic_from_momentum || held_share) momentum[d] = field.momentum[d].data();
+        if constexpr (held_share) field_velocity[d] = field.velocity[d].data();
         // XPIC: the filtered velocity u = v^L+ - w, and w.
         velocity[d] = xpic_filtered ? system.xpic[b.field].iterate.velocity[d].data() : field.velocity[d].data();
         velocity_change[d] = xpic ? system.xpic[b.field].correction[d].data() : field.velocity_change[d].data();
@@ -321,7 +321,11 @@ void g2p(DiscreteSystem<D, Shape>& system) {
           for (int i = 0; i < D; ++i) {
             const NodePair v = load_nodes<Count>(velocity[i] + n);
             if constexpr (Motion) {
-              v_sum[i] += N * v;
+              if constexpr (apic_from_momentum) {
+                v_sum[i] += N * momentum_velocity<Count>(momentum[i] + n, mass + n);
+              } else {
+                v_sum[i] += N * v;
+              }
               if constexpr (held_share)
                 held_sum[i] += N * (momentum_velocity<Count>(momentum[i] + n, mass + n) -
                                     load_nodes<Count>(field_velocity[i] + n));
@@ -351,8 +355,8 @@ void g2p(DiscreteSystem<D, Shape>& system) {
           // The grid velocity a particle carries away, with the held nodes' share.
           Vec<D> v_carried = v_grid;
           if constexpr (held_share) v_carried += held;
-          // XPIC moves the particles with v^L+ = u + w; APIC with p_I / m_I.
-          const Vec<D> x_new = b.x[p] + dt * (apic ? v_carried : xpic_filtered ? Vec<D>(v_grid + dv) : v_grid);
+          // XPIC moves the particles with v^L+ = u + w.
+          const Vec<D> x_new = b.x[p] + dt * (xpic_filtered ? Vec<D>(v_grid + dv) : v_grid);
           // A particle must stay where its stencil has nodes and may cross at
           // most one cell per step; otherwise it is not moved and the step
           // fails. (The range is checked on the grid coordinate before it
