@@ -99,11 +99,7 @@ Wiring with_contact(const Wiring& wiring, bool bonded) {
       contact_nodes.push_back(insert_after(w, i, contact_updated));
       if (bonded) contact_nodes.push_back(insert_before(w, i, contact_bonds));
     }
-    if (!runs(wiring.nodes[i], grid_velocity)) continue;
-    const bool feeds_stress = std::ranges::any_of(wiring.edges, [&](const auto& e) {
-      return e.first == i && runs(wiring.nodes[e.second], g2p_stress);
-    });
-    if (feeds_stress) contact_nodes.push_back(insert_after(w, i, contact_projected));
+    if (runs(wiring.nodes[i], grid_velocity)) contact_nodes.push_back(insert_after(w, i, contact_projected));
   }
   const int volumes = static_cast<int>(w.nodes.size());
   w.nodes.push_back({contact_volumes});

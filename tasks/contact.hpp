@@ -102,22 +102,6 @@ void contact_volumes(DiscreteSystem<D, Shape>& system) {
 
 namespace detail {
 
-// What contact_updated sums over a slab of nodes, then over the slabs in order.
-template <int D>
-struct ContactSums {
-  std::vector<double> normal;           // per pair: sum of -dp_a . n (N s)
-  std::vector<Vec<D>> tangential;       // per pair: sum of the tangential impulses on a (N s)
-  std::vector<Vec<D>> rigid_impulse;    // per rigid body: the impulse it gave the bodies (N s)
-  std::vector<double> rigid_work;       // per rigid body: dp . V (J)
-  double work = 0.0;                    // dp . (v_start + v_end) / 2 over the fields (J)
-
-  explicit ContactSums(const ContactFields<D>& c)
-      : normal(c.pairs.size(), 0.0),
-        tangential(c.pairs.size(), Vec<D>::Zero()),
-        rigid_impulse(c.rigid.size(), Vec<D>::Zero()),
-        rigid_work(c.rigid.size(), 0.0) {}
-};
-
 // The velocities of node n's fields, corrected pair by pair. `Updated`:
 // after grid_integrate, from the momenta (and with the sums); otherwise
 // the projected velocities the stress update reads.
@@ -163,7 +147,7 @@ struct NodeContact {
   }
 
   // Corrects node n; adds to `sums` when Updated.
-  void operator()(std::size_t n, ContactSums<D>& sums) {
+  void operator()(std::size_t n, ContactImpulses<D>& sums) {
     const int fields = system.field_count();
     int present = 0;
     for (int k = 0; k < fields; ++k) {
@@ -197,8 +181,7 @@ struct NodeContact {
         const Vec<D> change_b = -impulse / m[b];
         dv[a] += change_a;
         dv[b] += change_b;
-        if constexpr (Updated)
-          if (pair >= 0) add_pair_sums(sums, static_cast<std::size_t>(pair), impulse, normal);
+        if (pair >= 0) add_pair_sums(sums, static_cast<std::size_t>(pair), impulse, normal);
       }
       // Rigid bodies.
       for (std::size_t ri = 0; ri < contact.rigid.size(); ++ri) {
@@ -210,11 +193,9 @@ struct NodeContact {
         if (change_a.isZero(0.0)) continue;
         const Vec<D> impulse = m[a] * change_a;
         dv[a] += change_a;
-        if constexpr (Updated) {
-          sums.rigid_impulse[ri] += impulse;
-          sums.rigid_work[ri] += impulse.dot(rigid_velocity[ri]);
-          add_pair_sums(sums, static_cast<std::size_t>(pair), impulse, normal);
-        }
+        sums.rigid_impulse[ri] += impulse;
+        sums.rigid_work[ri] += impulse.dot(rigid_velocity[ri]);
+        add_pair_sums(sums, static_cast<std::size_t>(pair), impulse, normal);
       }
     }
     // Write back what changed.
@@ -232,12 +213,18 @@ struct NodeContact {
           f.velocity_change[d][n] += dv[k][d];
         }
       } else {
-        for (int d = 0; d < D; ++d) f.velocity[d][n] += dv[k][d];
+        // An impulse at an instant: its work is the change of the kinetic
+        // energy, the impulse times the mean of the velocities before and after.
+        sums.work += m[k] * dv[k].dot(v[k] + 0.5 * dv[k]);
+        for (int d = 0; d < D; ++d) {
+          f.momentum[d][n] += m[k] * dv[k][d];
+          f.velocity[d][n] += dv[k][d];
+        }
       }
     }
   }
 
-  static void add_pair_sums(ContactSums<D>& sums, std::size_t pair, const Vec<D>& impulse, const Vec<D>& normal) {
+  static void add_pair_sums(ContactImpulses<D>& sums, std::size_t pair, const Vec<D>& impulse, const Vec<D>& normal) {
     const double along = impulse.dot(normal);
     sums.normal[pair] -= along;
     sums.tangential[pair] += impulse - along * normal;
@@ -247,44 +234,53 @@ struct NodeContact {
 // Runs NodeContact over the active nodes, slab by slab in parallel, and
 // returns the sums of each slab in slab order.
 template <int D, class Shape, bool Updated>
-std::vector<ContactSums<D>> contact_pass(DiscreteSystem<D, Shape>& system, double time) {
+std::vector<ContactImpulses<D>> contact_pass(DiscreteSystem<D, Shape>& system, double time) {
   const auto& grid = system.grid;
   const int first = grid.active_lo[D - 1], last = grid.active_hi[D - 1];
-  std::vector<ContactSums<D>> slab_sums(static_cast<std::size_t>(last - first + 1), ContactSums<D>(*system.contact));
+  const ContactFields<D>& contact = *system.contact;
+  std::vector<ContactImpulses<D>> slab_sums(static_cast<std::size_t>(last - first + 1),
+                                            ContactImpulses<D>(contact.pairs.size(), contact.rigid.size()));
   tbb::parallel_for(tbb::blocked_range<int>(first, last + 1), [&](const tbb::blocked_range<int>& slabs) {
     NodeContact<D, Shape, Updated> node(system, time);
     for (int slab = slabs.begin(); slab != slabs.end(); ++slab) {
-      ContactSums<D>& sums = slab_sums[static_cast<std::size_t>(slab - first)];
+      ContactImpulses<D>& sums = slab_sums[static_cast<std::size_t>(slab - first)];
       grid.for_each_active_node_in_slab(slab, [&](std::size_t n, const Index<D>&) { node(n, sums); });
     }
   });
   return slab_sums;
 }
 
+// The slabs' sums, added in slab order.
+template <int D>
+ContactImpulses<D> slab_total(const std::vector<ContactImpulses<D>>& slab_sums, const ContactFields<D>& contact) {
+  ContactImpulses<D> total(contact.pairs.size(), contact.rigid.size());
+  for (const auto& s : slab_sums) total += s;
+  return total;
+}
+
 }  // namespace detail
 
+// The projected pass's impulses reach the particles' velocities (and so
+// their momentum and kinetic energy) in the share that the particles take
+// the grid's velocity rather than its increment: all of them for PIC, APIC
+// and XPIC, 1 - a for the blend, none for FLIP, whose increment counts from
+// the corrected velocity. Each pass replaces the last one's: the pass after
+// MUSL's second projection corrects only what its stress update reads, and
+// the next step's first pass takes its place.
 template <int D, class Shape>
 void contact_projected(DiscreteSystem<D, Shape>& system) {
-  detail::contact_pass<D, Shape, false>(system, system.t);
+  ContactFields<D>& contact = *system.contact;
+  contact.projected = detail::slab_total(detail::contact_pass<D, Shape, false>(system, system.t), contact);
+  contact.projected *= 1.0 - system.flip_fraction;
 }
 
 template <int D, class Shape>
 void contact_updated(DiscreteSystem<D, Shape>& system) {
   ContactFields<D>& contact = *system.contact;
   const double dt = system.dt;
-  const auto slab_sums = detail::contact_pass<D, Shape, true>(system, system.t + dt);
-  detail::ContactSums<D> total(contact);
-  for (const auto& s : slab_sums) {
-    for (std::size_t i = 0; i < contact.pairs.size(); ++i) {
-      total.normal[i] += s.normal[i];
-      total.tangential[i] += s.tangential[i];
-    }
-    for (std::size_t r = 0; r < contact.rigid.size(); ++r) {
-      total.rigid_impulse[r] += s.rigid_impulse[r];
-      total.rigid_work[r] += s.rigid_work[r];
-    }
-    total.work += s.work;
-  }
+  ContactImpulses<D> total = detail::slab_total(detail::contact_pass<D, Shape, true>(system, system.t + dt), contact);
+  total += contact.projected;  // the step's impulses: at the projection and after the update
+  contact.projected = ContactImpulses<D>(contact.pairs.size(), contact.rigid.size());
   for (std::size_t i = 0; i < contact.pairs.size(); ++i) {
     if (is_interface(contact.pairs[i].law)) continue;  // its forces are contact_bonds'
     contact.pairs[i].normal_force = total.normal[i] / dt;

@@ -90,7 +90,8 @@ inline StageAccess stage_access(Stage s) {
     case Stage::transport_g2p: return {particle_motion | grid_transport, particle_transport};
     case Stage::nonlocal_settle: return {particle_motion | particle_stress, particle_stress | nonlocal_tables};
     case Stage::contact_volumes: return {particle_motion | particle_volume, contact_volumes};
-    case Stage::contact_projected: return {grid_momentum | grid_velocity | contact_volumes, grid_velocity};
+    case Stage::contact_projected:
+      return {grid_momentum | grid_velocity | contact_volumes, grid_momentum | grid_velocity};
     case Stage::contact_updated:
       return {grid_momentum | grid_force | grid_velocity | contact_volumes, grid_momentum | grid_velocity | reaction_sums};
     case Stage::contact_bonds: return {grid_momentum | grid_force | contact_volumes, grid_force | reaction_sums};

@@ -262,11 +262,31 @@ TEST_CASE("Sulsky's disks with frictionless contact: the normal force never pull
           << "), separation at the end " << contact.measures.at("separation_final") << " m (one field "
           << one_field.measures.at("separation_final") << ")");
   CHECK(contact.measures.at("separation_final") > contact.measures.at("separation_min") + 0.1);
-  // The contact takes more energy than the shared field (0.72 of the
-  // kinetic energy left against 0.90; the issue asks at least as much):
-  // not met yet (docs/validation/contact.md). What it keeps is bounded
-  // below, so that a contact that loses more is caught.
-  CHECK(contact.measures.at("kinetic_final") > 0.7);
+  // The total energy changes less than in the shared field (measured 0.043
+  // against 0.075), as the issue asks. The kinetic energy left is less
+  // (0.822 against 0.893; the issue asks at least as much): not met yet,
+  // more of it stays in the disks' vibration (docs/validation/contact.md).
+  // What it keeps is bounded below, so that a contact that loses more is caught.
+  CHECK(contact.errors.at("energy") <= one_field.errors.at("energy"));
+  CHECK(contact.measures.at("kinetic_final") > 0.8);
+}
+
+TEST_CASE("two fields under the stick law move as one field: Sulsky's disks, USL, USF and MUSL") {
+  // The contact corrects the projected momenta and FLIP's increment counts
+  // from them, so two fields that stick at every shared node are the one
+  // field up to the order of the sums (round-off).
+  for (const char* scheme : {"usl", "usf", "musl"}) {
+    CAPTURE(scheme);
+    const std::string set_scheme = std::string("analysis.scheme=") + scheme;
+    const RunSummary one_field = testing::run(read_case(testing::config("benchmarks/sulsky_disks.toml"), {set_scheme}));
+    const RunSummary stick = testing::run(read_case(testing::config("contact/sulsky_disks_frictionless.toml"),
+                                                    {set_scheme, "contacts[0].law=stick"}));
+    for (const char* measure : {"kinetic_final", "separation_final", "separation_min"}) {
+      CAPTURE(measure);
+      CHECK(stick.measures.at(measure) == doctest::Approx(one_field.measures.at(measure)).epsilon(1e-10));
+    }
+    CHECK(stick.errors.at("energy") == doctest::Approx(one_field.errors.at("energy")).epsilon(1e-10));
+  }
 }
 
 TEST_CASE("a 3D block dropped on a rigid floor bounces off it, and the energy balance closes") {
@@ -295,7 +315,13 @@ TEST_CASE("a 3D block dropped on a rigid floor bounces off it, and the energy ba
             << "energy balance error " << r.energy_error << ", contact work " << *r.contact_work << " J");
     CHECK(highest_rise > 0.5);  // measured 1.14 and 1.15 m/s; held, the block stays on the plane
     CHECK(r.energy_error < 0.05);
-    CHECK(*r.contact_work < 0.0);  // the floor is at rest: the impacts only take energy out
+    if (friction) {
+      CHECK(*r.contact_work < 0.0);  // friction on a floor at rest only takes energy out
+    } else {
+      // A frictionless floor at rest does no work on the block; what the
+      // nodal impacts count is the discretisation's (measured +0.090 J).
+      CHECK(std::abs(*r.contact_work) < 0.01 * r.gravity_work);
+    }
   }
 }
 

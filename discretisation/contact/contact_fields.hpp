@@ -53,6 +53,43 @@ struct RigidMotion {
   }
 };
 
+// The impulses a contact pass applied, summed over the nodes (tasks/contact.hpp).
+template <int D>
+struct ContactImpulses {
+  std::vector<double> normal;         // per pair: sum of -dp_a . n (N s)
+  std::vector<Vec<D>> tangential;     // per pair: sum of the tangential impulses on a (N s)
+  std::vector<Vec<D>> rigid_impulse;  // per rigid body: the impulse it gave the bodies (N s)
+  std::vector<double> rigid_work;     // per rigid body: dp . V (J)
+  double work = 0.0;                  // the work of the impulses on the fields (J)
+
+  ContactImpulses(std::size_t pairs, std::size_t rigid_bodies)
+      : normal(pairs, 0.0),
+        tangential(pairs, Vec<D>::Zero()),
+        rigid_impulse(rigid_bodies, Vec<D>::Zero()),
+        rigid_work(rigid_bodies, 0.0) {}
+
+  ContactImpulses& operator+=(const ContactImpulses& o) {
+    for (std::size_t i = 0; i < o.normal.size(); ++i) {
+      normal[i] += o.normal[i];
+      tangential[i] += o.tangential[i];
+    }
+    for (std::size_t r = 0; r < o.rigid_impulse.size(); ++r) {
+      rigid_impulse[r] += o.rigid_impulse[r];
+      rigid_work[r] += o.rigid_work[r];
+    }
+    work += o.work;
+    return *this;
+  }
+  ContactImpulses& operator*=(double share) {
+    for (double& x : normal) x *= share;
+    for (Vec<D>& x : tangential) x *= share;
+    for (Vec<D>& x : rigid_impulse) x *= share;
+    for (double& x : rigid_work) x *= share;
+    work *= share;
+    return *this;
+  }
+};
+
 template <int D>
 struct ContactFields {
   using VectorField = typename NodalField<D>::VectorField;
@@ -71,6 +108,9 @@ struct ContactFields {
   // for stick (fields = 1 + K + R).
   std::vector<int> pair_of;
   int fields = 1;
+  // What of the impulses of the last contact_projected pass reaches the
+  // particles (tasks/contact.hpp); contact_updated counts it with its own.
+  ContactImpulses<D> projected{0, 0};
 
   int deformable_count() const { return static_cast<int>(deformable.size()); }
   bool is_rigid(int field) const { return field > deformable_count(); }
