@@ -44,8 +44,7 @@ enum class TransportBranch {
 Wiring with_transport(const Wiring& mechanical, TransportBranch branch = TransportBranch::beside);
 
 // `wiring` with the contact stages (tasks/contact.hpp): contact_updated
-// after each grid_integrate, contact_projected after each grid_velocity
-// whose next node updates the stress (USF; MUSL's second projection), with
+// after each grid_integrate, contact_projected after each grid_velocity, with
 // an interface (`bonded`) contact_bonds right before each grid_integrate
 // (tasks/contact_bonds.hpp), and contact_volumes, with no predecessor,
 // before every contact node.

@@ -5,9 +5,10 @@
 //                      particles at the start of the step, and for a field
 //                      an interface bonds the sums of its displacement fit
 //                      (interface_displacement.hpp);
-//   contact_projected: after a grid_velocity whose velocities the stress
-//                      update reads (USF, and MUSL's second projection): the
-//                      contact laws applied to those velocities;
+//   contact_projected: after every grid_velocity: the contact laws applied
+//                      to the projected momenta and velocities, which FLIP's
+//                      increment counts from (grid_integrate) and the stress
+//                      update reads (USF, and MUSL's second projection);
 //   contact_updated:   after grid_integrate: the laws applied to the updated
 //                      momenta, the impulses added to each field's momentum,
 //                      velocity and velocity change (so FLIP and PIC both see

@@ -171,9 +171,8 @@ void grid_integrate(DiscreteSystem<D, Shape>& system) {
   const double dt = system.dt;
   add_external_forces(system);
   for (Wall<D>& wall : system.walls) wall.force.setZero();
-  // In a contact scene, a contact stage may have corrected the velocities
-  // the stress update read (tasks/contact.hpp contact_projected): the
-  // velocity change of FLIP counts from the projected momentum instead.
+  // In a contact scene, FLIP's velocity change counts from the projected
+  // momentum as contact_projected corrected it (tasks/contact.hpp).
   const bool from_momentum = system.contact.has_value();
   if (system.damping) system.damping_power = 0.0;
   for (int k = 0; k < system.field_count(); ++k) {
