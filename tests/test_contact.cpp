@@ -23,10 +23,12 @@ using namespace flowmpm;
 
 namespace {
 
-double incline_error(const std::string& file, const std::vector<std::string>& overrides, double* moved = nullptr) {
+double incline_error(const std::string& file, const std::vector<std::string>& overrides, double* moved = nullptr,
+                     double* energy_error = nullptr) {
   const Case c = read_case(testing::config(file), overrides);
   const RunSummary s = testing::run(c);
   if (moved) *moved = s.measures.at("displacement");
+  if (energy_error) *energy_error = s.energy_error;
   MESSAGE(file << " " << (overrides.empty() ? "" : overrides[0]) << ": moved " << s.measures.at("displacement")
                 << " m against " << s.measures.at("expected") << " m, error " << s.errors.at("displacement")
                 << ", energy balance error " << s.energy_error);
@@ -118,15 +120,20 @@ std::vector<std::string> with(std::vector<std::string> overrides, const std::vec
 // where it slides (the issue's), and 1 % of a cell of creep where it sticks
 // (mu = 0.7 > tan 30; incline_error is then the drift in cells). Where it
 // slides at most 0.33 m (mu >= 0.5) the floor or slab is cut at x = 0.8 m,
-// which changes no digit of the result and halves the run.
+// which changes no digit of the result and halves the run. Where it
+// slides, the energy balance closes within 2 % with friction's work in it
+// (measured at most 0.0091; 0.029 at mu = 0.5 when the contact's
+// projected impulses were left out of PIC's work).
 void check_incline(const std::string& file, const std::string& friction_key, const std::string& floor_end,
                    const std::vector<std::string>& mus, const std::vector<std::string>& more = {}) {
   for (const std::string& mu : mus) {
     CAPTURE(mu);
     std::vector<std::string> o = with({friction_key + "=" + mu}, more);
     if (std::stod(mu) >= 0.5 && !floor_end.empty()) o.push_back(floor_end + "=[0.8, 0.0]");
-    double moved = 1.0;
-    CHECK(incline_error(file, o, &moved) < (std::stod(mu) > 0.577 ? 0.01 : 0.02));
+    double moved = 1.0, energy_error = 1.0;
+    const bool slides = std::stod(mu) < 0.577;
+    CHECK(incline_error(file, o, &moved, &energy_error) < (slides ? 0.02 : 0.01));
+    if (slides) CHECK(energy_error < 0.02);
   }
 }
 
