@@ -103,9 +103,9 @@ void contact_volumes(DiscreteSystem<D, Shape>& system) {
 
 namespace detail {
 
-// The velocities of node n's fields, corrected pair by pair. `Updated`:
-// after grid_integrate, from the momenta (and with the sums); otherwise
-// the projected velocities the stress update reads.
+// The velocities of node n's fields, corrected pair by pair, and the
+// impulses summed. `Updated`: after grid_integrate, from the updated
+// momenta; otherwise the projected velocities, and their momenta with them.
 template <int D, class Shape, bool Updated>
 struct NodeContact {
   DiscreteSystem<D, Shape>& system;
@@ -147,7 +147,7 @@ struct NodeContact {
     return contact_velocity_change(pair.law, r, normal);
   }
 
-  // Corrects node n; adds to `sums` when Updated.
+  // Corrects node n; adds its impulses and their work to `sums`.
   void operator()(std::size_t n, ContactImpulses<D>& sums) {
     const int fields = system.field_count();
     int present = 0;
@@ -238,9 +238,7 @@ template <int D, class Shape, bool Updated>
 std::vector<ContactImpulses<D>> contact_pass(DiscreteSystem<D, Shape>& system, double time) {
   const auto& grid = system.grid;
   const int first = grid.active_lo[D - 1], last = grid.active_hi[D - 1];
-  const ContactFields<D>& contact = *system.contact;
-  std::vector<ContactImpulses<D>> slab_sums(static_cast<std::size_t>(last - first + 1),
-                                            ContactImpulses<D>(contact.pairs.size(), contact.rigid.size()));
+  std::vector<ContactImpulses<D>> slab_sums(static_cast<std::size_t>(last - first + 1), system.contact->no_impulses());
   tbb::parallel_for(tbb::blocked_range<int>(first, last + 1), [&](const tbb::blocked_range<int>& slabs) {
     NodeContact<D, Shape, Updated> node(system, time);
     for (int slab = slabs.begin(); slab != slabs.end(); ++slab) {
@@ -254,7 +252,7 @@ std::vector<ContactImpulses<D>> contact_pass(DiscreteSystem<D, Shape>& system, d
 // The slabs' sums, added in slab order.
 template <int D>
 ContactImpulses<D> slab_total(const std::vector<ContactImpulses<D>>& slab_sums, const ContactFields<D>& contact) {
-  ContactImpulses<D> total(contact.pairs.size(), contact.rigid.size());
+  ContactImpulses<D> total = contact.no_impulses();
   for (const auto& s : slab_sums) total += s;
   return total;
 }
@@ -281,7 +279,7 @@ void contact_updated(DiscreteSystem<D, Shape>& system) {
   const double dt = system.dt;
   ContactImpulses<D> total = detail::slab_total(detail::contact_pass<D, Shape, true>(system, system.t + dt), contact);
   total += contact.projected;  // the step's impulses: at the projection and after the update
-  contact.projected = ContactImpulses<D>(contact.pairs.size(), contact.rigid.size());
+  contact.projected = contact.no_impulses();
   for (std::size_t i = 0; i < contact.pairs.size(); ++i) {
     if (is_interface(contact.pairs[i].law)) continue;  // its forces are contact_bonds'
     contact.pairs[i].normal_force = total.normal[i] / dt;

@@ -63,6 +63,7 @@ void build_contact(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
     contact.pair_of[static_cast<std::size_t>(pair.first * next + pair.second)] = static_cast<int>(contact.pairs.size());
     contact.pairs.push_back(std::move(pair));
   }
+  contact.projected = contact.no_impulses();
   // The nodal displacements of the fields an interface bonds (both deformable).
   contact.displacement.resize(contact.deformable.size());
   for (const ContactPair& pair : contact.pairs) {

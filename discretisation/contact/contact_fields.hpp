@@ -69,11 +69,11 @@ struct ContactImpulses {
         rigid_work(rigid_bodies, 0.0) {}
 
   ContactImpulses& operator+=(const ContactImpulses& o) {
-    for (std::size_t i = 0; i < o.normal.size(); ++i) {
+    for (std::size_t i = 0; i < normal.size(); ++i) {
       normal[i] += o.normal[i];
       tangential[i] += o.tangential[i];
     }
-    for (std::size_t r = 0; r < o.rigid_impulse.size(); ++r) {
+    for (std::size_t r = 0; r < rigid_impulse.size(); ++r) {
       rigid_impulse[r] += o.rigid_impulse[r];
       rigid_work[r] += o.rigid_work[r];
     }
@@ -111,6 +111,9 @@ struct ContactFields {
   // What of the impulses of the last contact_projected pass reaches the
   // particles (tasks/contact.hpp); contact_updated counts it with its own.
   ContactImpulses<D> projected{0, 0};
+
+  // Sums of no impulses, one per pair and rigid body.
+  ContactImpulses<D> no_impulses() const { return ContactImpulses<D>(pairs.size(), rigid.size()); }
 
   int deformable_count() const { return static_cast<int>(deformable.size()); }
   bool is_rigid(int field) const { return field > deformable_count(); }
