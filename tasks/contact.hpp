@@ -39,6 +39,7 @@
 
 #include <array>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "tasks/grid_update.hpp"
@@ -110,6 +111,7 @@ template <int D, class Shape, bool Updated>
 struct NodeContact {
   DiscreteSystem<D, Shape>& system;
   const ContactFields<D>& contact;
+  std::vector<NodalField<D>*> corrected;  // per velocity field, the nodal values corrected
   std::vector<Vec<D>> rigid_velocity;  // per rigid body, at this stage's time
   double node_volume = 1.0;            // prod h
   // Scratch, per field: mass, velocity, velocity change so far, and (Updated)
@@ -117,9 +119,10 @@ struct NodeContact {
   std::vector<double> m;
   std::vector<Vec<D>> v, dv, v_start;
 
-  NodeContact(DiscreteSystem<D, Shape>& s, double time)
+  NodeContact(DiscreteSystem<D, Shape>& s, double time, std::vector<NodalField<D>*> nodal)
       : system(s),
         contact(*s.contact),
+        corrected(std::move(nodal)),
         m(s.field_count()),
         v(s.field_count()),
         dv(s.field_count()),
@@ -152,7 +155,7 @@ struct NodeContact {
     const int fields = system.field_count();
     int present = 0;
     for (int k = 0; k < fields; ++k) {
-      const NodalField<D>& f = system.field(k);
+      const NodalField<D>& f = *corrected[k];
       m[k] = f.mass[n];
       if (!(m[k] > 0.0)) continue;
       ++present;
@@ -202,7 +205,7 @@ struct NodeContact {
     // Write back what changed.
     for (int k = 0; k < fields; ++k) {
       if (!(m[k] > 0.0) || dv[k].isZero(0.0)) continue;
-      NodalField<D>& f = system.field(k);
+      NodalField<D>& f = *corrected[k];
       if constexpr (Updated) {
         // The contact's impulse on the field times the mean of its velocity
         // at the start and at the end of the step.
@@ -232,15 +235,25 @@ struct NodeContact {
   }
 };
 
-// Runs NodeContact over the active nodes, slab by slab in parallel, and
-// returns the sums of each slab in slab order.
+// Each velocity field's nodal values.
+template <int D, class Shape>
+std::vector<NodalField<D>*> velocity_fields(DiscreteSystem<D, Shape>& system) {
+  std::vector<NodalField<D>*> fields;
+  for (int k = 0; k < system.field_count(); ++k) fields.push_back(&system.field(k));
+  return fields;
+}
+
+// Runs NodeContact on `fields` (by default the velocity fields) over the
+// active nodes, slab by slab in parallel, and returns the sums of each slab
+// in slab order.
 template <int D, class Shape, bool Updated>
-std::vector<ContactImpulses<D>> contact_pass(DiscreteSystem<D, Shape>& system, double time) {
+std::vector<ContactImpulses<D>> contact_pass(DiscreteSystem<D, Shape>& system, double time,
+                                             const std::vector<NodalField<D>*>& fields) {
   const auto& grid = system.grid;
   const int first = grid.active_lo[D - 1], last = grid.active_hi[D - 1];
   std::vector<ContactImpulses<D>> slab_sums(static_cast<std::size_t>(last - first + 1), system.contact->no_impulses());
   tbb::parallel_for(tbb::blocked_range<int>(first, last + 1), [&](const tbb::blocked_range<int>& slabs) {
-    NodeContact<D, Shape, Updated> node(system, time);
+    NodeContact<D, Shape, Updated> node(system, time, fields);
     for (int slab = slabs.begin(); slab != slabs.end(); ++slab) {
       ContactImpulses<D>& sums = slab_sums[static_cast<std::size_t>(slab - first)];
       grid.for_each_active_node_in_slab(slab, [&](std::size_t n, const Index<D>&) { node(n, sums); });
@@ -269,15 +282,49 @@ ContactImpulses<D> slab_total(const std::vector<ContactImpulses<D>>& slab_sums, 
 template <int D, class Shape>
 void contact_projected(DiscreteSystem<D, Shape>& system) {
   ContactFields<D>& contact = *system.contact;
-  contact.projected = detail::slab_total(detail::contact_pass<D, Shape, false>(system, system.t), contact);
+  contact.projected = detail::slab_total(detail::contact_pass<D, Shape, false>(system, system.t, detail::velocity_fields(system)), contact);
   contact.projected *= 1.0 - system.flip_fraction;
+}
+
+// XPIC's iterates u_k = Q^(k-1) v^L (tasks/xpic.hpp) take the contact laws
+// as the projected velocities do, with the same touch test and normals and
+// each iterate's own approach test, as NairnMPM imposes contact on every
+// increment of its XPIC recursion [NairnMPM]: so that the filter w, whose
+// particles' velocity is sum_I N_Ip (v_I^L+ - w_I), knows of the contact
+// that corrects v^L+ (two fields in stick are one field's XPIC). Their
+// impulses count nowhere: the iterates are no momentum of the step.
+// Only the nodes where two or more fields carry mass can change: those of
+// contact_nodes, found once per step.
+template <int D, class Shape>
+std::vector<std::size_t> contact_nodes(const DiscreteSystem<D, Shape>& system) {
+  const ContactFields<D>& contact = *system.contact;
+  const int fields = system.field_count();
+  std::vector<std::size_t> nodes;
+  for_each_active_node(system.grid, [&](std::size_t n, const Index<D>&) {
+    int present = 0;
+    for (int k = 0; k < fields; ++k) present += system.field(k).mass[n] > 0.0 ? 1 : 0;
+    for (std::size_t r = 0; r < contact.rigid.size(); ++r) present += contact.volume[fields - 1 + r][n] > 0.0 ? 1 : 0;
+    if (present >= 2) nodes.push_back(n);
+  });
+  return nodes;
+}
+
+template <int D, class Shape>
+void contact_on_xpic_iterates(DiscreteSystem<D, Shape>& system, const std::vector<std::size_t>& nodes) {
+  std::vector<NodalField<D>*> iterates;
+  for (XpicNodes<D>& x : system.xpic) iterates.push_back(&x.iterate);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nodes.size(), 256), [&](const tbb::blocked_range<std::size_t>& r) {
+    detail::NodeContact<D, Shape, false> node(system, system.t, iterates);
+    ContactImpulses<D> discarded = system.contact->no_impulses();
+    for (std::size_t i = r.begin(); i != r.end(); ++i) node(nodes[i], discarded);
+  });
 }
 
 template <int D, class Shape>
 void contact_updated(DiscreteSystem<D, Shape>& system) {
   ContactFields<D>& contact = *system.contact;
   const double dt = system.dt;
-  ContactImpulses<D> total = detail::slab_total(detail::contact_pass<D, Shape, true>(system, system.t + dt), contact);
+  ContactImpulses<D> total = detail::slab_total(detail::contact_pass<D, Shape, true>(system, system.t + dt, detail::velocity_fields(system)), contact);
   total += contact.projected;  // the step's impulses: at the projection and after the update
   contact.projected = contact.no_impulses();
   for (std::size_t i = 0; i < contact.pairs.size(); ++i) {

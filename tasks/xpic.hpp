@@ -18,6 +18,7 @@
 // scatter per projection), in p2g's colour order (deterministic), each
 // contact field on its own; contact acts on v^L+ only.
 #pragma once
+#include "tasks/contact.hpp"
 #include "tasks/grid_update.hpp"
 #include "tasks/parallel_blocks.hpp"
 
@@ -29,7 +30,7 @@ namespace flowmpm {
 // v^L+ - w as two sums, and L_p from v^L+).
 template <int D, class Shape>
 bool xpic_filters_strain(const DiscreteSystem<D, Shape>& system) {
-  return !system.contact && system.walls.empty();
+  return system.walls.empty();
 }
 
 namespace detail {
@@ -77,13 +78,13 @@ void xpic_map(DiscreteSystem<D, Shape>& system) {
 }
 
 // u_k = momentum / m_I (0 on an empty node) with the constraints at t, as
-// grid_velocity; then w = a u_k (First) or w += a u_k.
+// grid_velocity, and the contact laws, as contact_projected; then
+// w = a u_k (First) or w += a u_k.
 template <int D, class Shape, bool First>
-void xpic_iterate(DiscreteSystem<D, Shape>& system, double a) {
+void xpic_iterate(DiscreteSystem<D, Shape>& system, double a, const std::vector<std::size_t>& contact_nodes) {
   for (int k = 0; k < system.field_count(); ++k) {
     const NodalField<D>& field = system.field(k);
-    XpicNodes<D>& x = system.xpic[k];
-    NodalField<D>& iterate = x.iterate;
+    NodalField<D>& iterate = system.xpic[k].iterate;
     fold_mirror_planes(system, iterate, iterate.momentum, false);  // the mass is folded already
     for_each_active_node(system.grid, [&](std::size_t n, const Index<D>&) {
       if constexpr (First) iterate.mass[n] = field.mass[n];
@@ -91,6 +92,11 @@ void xpic_iterate(DiscreteSystem<D, Shape>& system, double a) {
       for (int d = 0; d < D; ++d) iterate.velocity[d][n] = m > 0.0 ? iterate.momentum[d][n] / m : 0.0;
     });
     apply_velocity_constraints(system, iterate, system.t);
+  }
+  if (system.contact) contact_on_xpic_iterates(system, contact_nodes);
+  for (int k = 0; k < system.field_count(); ++k) {
+    XpicNodes<D>& x = system.xpic[k];
+    const NodalField<D>& iterate = x.iterate;
     for_each_active_node(system.grid, [&](std::size_t n, const Index<D>&) {
       for (int d = 0; d < D; ++d) {
         const double u = iterate.velocity[d][n];
@@ -109,13 +115,14 @@ void xpic_iterate(DiscreteSystem<D, Shape>& system, double a) {
 template <int D, class Shape>
 void xpic_correction(DiscreteSystem<D, Shape>& system) {
   const int m = system.xpic_order;
+  const std::vector<std::size_t> nodes = system.contact ? contact_nodes(system) : std::vector<std::size_t>{};
   detail::xpic_map<D, Shape, true>(system);
-  detail::xpic_iterate<D, Shape, true>(system, 1.0 - m);
+  detail::xpic_iterate<D, Shape, true>(system, 1.0 - m, nodes);
   double binomial = m;  // C(m, k - 1)
   for (int k = 2; k <= m; ++k) {
     binomial = binomial * (m - k + 1) / k;
     detail::xpic_map<D, Shape, false>(system);
-    detail::xpic_iterate<D, Shape, false>(system, k % 2 == 0 ? binomial : -binomial);
+    detail::xpic_iterate<D, Shape, false>(system, k % 2 == 0 ? binomial : -binomial, nodes);
   }
   if (!xpic_filters_strain(system)) return;
   for (int k = 0; k < system.field_count(); ++k) {
