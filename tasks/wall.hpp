@@ -47,4 +47,25 @@ void apply_walls(DiscreteSystem<D, Shape>& system, int k) {
   }
 }
 
+// XPIC's iterates u_k (tasks/xpic.hpp) take the walls too, at t as they
+// take the velocity constraints, so that its filter w knows of the walls
+// that correct v^L+ (as contact_on_xpic_iterates for contact). Nothing is
+// measured: the iterates are no momentum of the step.
+template <int D, class Shape>
+void walls_on_xpic_iterate(const DiscreteSystem<D, Shape>& system, NodalField<D>& iterate) {
+  for (const Wall<D>& wall : system.walls) {
+    Vec<D> V = Vec<D>::Zero(), n = Vec<D>::Zero();
+    for (int d = 0; d < D; ++d)
+      if (wall.velocity[d]) V[d] = (*wall.velocity[d])(system.t);
+    n[wall.axis] = wall.outward;
+    for (const std::size_t node : wall.nodes) {
+      if (!(iterate.mass[node] > 0.0)) continue;
+      Vec<D> v;
+      for (int d = 0; d < D; ++d) v[d] = iterate.velocity[d][node];
+      const Vec<D> dv = contact_velocity_change(wall.law, Vec<D>(v - V), n);
+      for (int d = 0; d < D; ++d) iterate.velocity[d][node] += dv[d];
+    }
+  }
+}
+
 }  // namespace flowmpm

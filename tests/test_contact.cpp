@@ -150,9 +150,10 @@ void check_incline(const std::string& file, const std::string& friction_key, con
 TEST_CASE("incline: a block on a rigid plane slides as g (sin - mu cos) t^2 / 2, and sticks when mu > tan 30") {
   const std::string file = "contact/incline_block_rigid.toml";
   check_incline(file, "contacts[0].friction", "bodies[1].max", {"0.0", "0.2", "0.5", "0.7"});
-  // With XPIC(5) it sticks too. Its strain update takes the filtered
-  // velocity, whose iterates take the contact laws; before they did, the
-  // block crept 7.9 cells that way.
+  // With XPIC(5) it sticks too: with contact XPIC keeps its strain update
+  // from v^L+; from its filtered velocity it crept 7.9 cells while the
+  // iterates knew nothing of the contact, and 0.26 % of a cell since they
+  // take its laws (tasks/xpic.hpp).
   check_incline(file, "contacts[0].friction", "bodies[1].max", {"0.7"}, {"analysis.velocity_update=xpic"});
 }
 
@@ -284,7 +285,10 @@ TEST_CASE("two fields under the stick law move as one field: Sulsky's disks, USL
   // from them, and XPIC's iterates take the contact laws, so two fields that
   // stick at every shared node are the one field up to the order of the sums
   // (round-off). Before the iterates did, XPIC(5) in two fields kept 0.23
-  // of the kinetic energy where one field keeps 0.91.
+  // of the kinetic energy where one field keeps 0.91. XPIC under USL with
+  // contact keeps its strain from v^L+ (tasks/xpic.hpp xpic_filters_strain,
+  // measured better where bodies slide and stick), one field from the
+  // filtered u: there the two keep 0.897 and 0.913.
   for (const char* scheme : {"usl", "usf", "musl"}) {
     for (const char* update : {"flip", "pic", "blend", "apic", "xpic"}) {
       CAPTURE(scheme);
@@ -296,6 +300,10 @@ TEST_CASE("two fields under the stick law move as one field: Sulsky's disks, USL
       in_contact.push_back("contacts[0].law=stick");
       const RunSummary one_field = testing::run(read_case(testing::config("benchmarks/sulsky_disks.toml"), settings));
       const RunSummary stick = testing::run(read_case(testing::config("contact/sulsky_disks_frictionless.toml"), in_contact));
+      if (std::string(update) == "xpic" && std::string(scheme) == "usl") {
+        CHECK(std::abs(stick.measures.at("kinetic_final") - one_field.measures.at("kinetic_final")) < 0.03);
+        continue;
+      }
       for (const char* measure : {"kinetic_final", "separation_final", "separation_min"}) {
         CAPTURE(measure);
         CHECK(stick.measures.at(measure) == doctest::Approx(one_field.measures.at(measure)).epsilon(1e-10));

@@ -127,8 +127,8 @@ TEST_CASE("APIC and XPIC(5): bit for bit too, with contact") {
   check_dimension<2, QuadraticBSpline>("", "apic");
   check_dimension<2, LinearShape>(coulomb_contact, "apic");
   check_dimension<2, GimpShape>(coulomb_contact, "xpic");
-  // XPIC's particles take its filtered velocity u, and under USL their
-  // strain too; with contact its iterates take the contact laws.
+  // XPIC's particles take its filtered velocity u, and without contact
+  // under USL their strain too; with contact its iterates take the laws.
   check_dimension<2, LinearShape>("", "xpic");
   check_dimension<2, LinearShape>("", "xpic", "usl");
   check_dimension<2, LinearShape>(coulomb_contact, "xpic", "usl");
