@@ -294,18 +294,29 @@ void contact_projected(DiscreteSystem<D, Shape>& system) {
 // that corrects v^L+ (two fields in stick are one field's XPIC). Their
 // impulses count nowhere: the iterates are no momentum of the step.
 // Only the nodes where two or more fields carry mass can change: those of
-// contact_nodes, found once per step.
+// contact_nodes, found once per step, slab by slab in parallel and joined
+// in slab order.
 template <int D, class Shape>
 std::vector<std::size_t> contact_nodes(const DiscreteSystem<D, Shape>& system) {
+  const auto& grid = system.grid;
   const ContactFields<D>& contact = *system.contact;
   const int fields = system.field_count();
-  std::vector<std::size_t> nodes;
-  for_each_active_node(system.grid, [&](std::size_t n, const Index<D>&) {
-    int present = 0;
-    for (int k = 0; k < fields; ++k) present += system.field(k).mass[n] > 0.0 ? 1 : 0;
-    for (std::size_t r = 0; r < contact.rigid.size(); ++r) present += contact.volume[fields - 1 + r][n] > 0.0 ? 1 : 0;
-    if (present >= 2) nodes.push_back(n);
+  const int first = grid.active_lo[D - 1], last = grid.active_hi[D - 1];
+  std::vector<std::vector<std::size_t>> slab_nodes(static_cast<std::size_t>(last - first + 1));
+  tbb::parallel_for(tbb::blocked_range<int>(first, last + 1), [&](const tbb::blocked_range<int>& slabs) {
+    for (int slab = slabs.begin(); slab != slabs.end(); ++slab) {
+      std::vector<std::size_t>& nodes = slab_nodes[static_cast<std::size_t>(slab - first)];
+      grid.for_each_active_node_in_slab(slab, [&](std::size_t n, const Index<D>&) {
+        int present = 0;
+        for (int k = 0; k < fields; ++k) present += system.field(k).mass[n] > 0.0 ? 1 : 0;
+        for (std::size_t r = 0; r < contact.rigid.size(); ++r)
+          present += contact.volume[fields - 1 + r][n] > 0.0 ? 1 : 0;
+        if (present >= 2) nodes.push_back(n);
+      });
+    }
   });
+  std::vector<std::size_t> nodes;
+  for (const auto& s : slab_nodes) nodes.insert(nodes.end(), s.begin(), s.end());
   return nodes;
 }
 
