@@ -69,6 +69,20 @@ struct Wall {
   AxisFunctions velocity;
   Vec<D> force = Vec<D>::Zero();
   double work = 0.0;
+
+  // The wall's velocity at time t (m/s; 0 along an axis it does not move on).
+  Vec<D> velocity_at(double t) const {
+    Vec<D> V = Vec<D>::Zero();
+    for (int d = 0; d < D; ++d)
+      if (velocity[d]) V[d] = (*velocity[d])(t);
+    return V;
+  }
+  // The unit normal out of the material into the wall.
+  Vec<D> normal() const {
+    Vec<D> n = Vec<D>::Zero();
+    n[axis] = outward;
+    return n;
+  }
 };
 
 // A temperature or concentration prescribed on a set of nodes.

@@ -307,11 +307,13 @@ std::vector<std::size_t> contact_nodes(const DiscreteSystem<D, Shape>& system) {
     for (int slab = slabs.begin(); slab != slabs.end(); ++slab) {
       std::vector<std::size_t>& nodes = slab_nodes[static_cast<std::size_t>(slab - first)];
       grid.for_each_active_node_in_slab(slab, [&](std::size_t n, const Index<D>&) {
+        // As NodeContact counts them: the fields with mass, and any rigid body as one.
         int present = 0;
         for (int k = 0; k < fields; ++k) present += system.field(k).mass[n] > 0.0 ? 1 : 0;
+        bool rigid_here = false;
         for (std::size_t r = 0; r < contact.rigid.size(); ++r)
-          present += contact.volume[fields - 1 + r][n] > 0.0 ? 1 : 0;
-        if (present >= 2) nodes.push_back(n);
+          rigid_here = rigid_here || contact.volume[fields - 1 + r][n] > 0.0;
+        if (present + (rigid_here ? 1 : 0) >= 2) nodes.push_back(n);
       });
     }
   });

@@ -22,10 +22,7 @@ void apply_walls(DiscreteSystem<D, Shape>& system, int k) {
   NodalField<D>& grid = system.field(k);
   const double t = system.t + system.dt, dt = system.dt;
   for (Wall<D>& wall : system.walls) {
-    Vec<D> V = Vec<D>::Zero(), n = Vec<D>::Zero();
-    for (int d = 0; d < D; ++d)
-      if (wall.velocity[d]) V[d] = (*wall.velocity[d])(t);
-    n[wall.axis] = wall.outward;
+    const Vec<D> V = wall.velocity_at(t), n = wall.normal();
     for (const std::size_t node : wall.nodes) {
       const double m = grid.mass[node];
       if (!(m > 0.0)) continue;
@@ -54,10 +51,7 @@ void apply_walls(DiscreteSystem<D, Shape>& system, int k) {
 template <int D, class Shape>
 void walls_on_xpic_iterate(const DiscreteSystem<D, Shape>& system, NodalField<D>& iterate) {
   for (const Wall<D>& wall : system.walls) {
-    Vec<D> V = Vec<D>::Zero(), n = Vec<D>::Zero();
-    for (int d = 0; d < D; ++d)
-      if (wall.velocity[d]) V[d] = (*wall.velocity[d])(system.t);
-    n[wall.axis] = wall.outward;
+    const Vec<D> V = wall.velocity_at(system.t), n = wall.normal();
     for (const std::size_t node : wall.nodes) {
       if (!(iterate.mass[node] > 0.0)) continue;
       Vec<D> v;
