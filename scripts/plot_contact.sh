@@ -25,6 +25,10 @@
 #                           normal force (with the 2D Hertz estimate) and the
 #                           kinetic energy beside the one-field run
 #                           (configs/benchmarks/sulsky_disks.toml)
+#   contact_bars.png        two elastic bars meeting end on: the pair's
+#                           normal force against the exact 10 N/m from 0.5 to
+#                           0.9 s, and the kinetic energy, at 4, 16 and 32
+#                           cells per bar
 #   contact_lap_shear.png   two strands bonded by an interface: load against
 #                           the pulled end's displacement, against Volkersen's
 #   contact_drop_3d.png     3D block on a rigid floor: centre height (and on a
@@ -58,6 +62,13 @@ run punch_10mm "$configs/contact/punch_von_mises.toml" --set grid.cell_size=0.01
 # Every step: the contact's duration is counted in steps.
 run sulsky_contact "$configs/contact/sulsky_disks_frictionless.toml" --set output.every=1 --set "$fields"
 run sulsky_one_field "$configs/benchmarks/sulsky_disks.toml" --set output.every=10 --set "$fields"
+# The bars at 4, 16 (the case file) and 32 cells per bar, dt = 0.02 h / c.
+bars="$configs/contact/bars_impact_frictionless.toml"
+run bars_4 "$bars" --set grid.cell_size=0.05 --set "grid.cells=[26, 4]" --set analysis.dt=1e-3 \
+  --set output.every=1 --set "$fields"
+run bars_16 "$bars" --set output.every=4 --set "$fields"
+run bars_32 "$bars" --set grid.cell_size=0.00625 --set "grid.cells=[208, 32]" --set analysis.dt=1.25e-4 \
+  --set output.every=8 --set "$fields"
 run drop_3d "$configs/contact/drop_3d_rigid_floor.toml" --set output.every=10 --set "$fields"
 run drop_3d_wall "$configs/contact/drop_3d_wall.toml" --set output.every=10 --set "$fields"
 run lap_shear_0.5mm "$configs/contact/lap_shear_interface.toml" --set grid.cell_size=0.0005 --set "grid.cells=[62, 6]" \
@@ -176,7 +187,13 @@ report = (
 open(f"{out}/report.txt", "w").write(report + "\n")
 open(f"{out}/hertz.txt", "w").write(f"{T_hertz:.3f} {touch:.3f}\n")
 
-# (e): the 3D drop.
+# (e): the bars: normal force and kinetic energy (J/m) against time.
+for per in ["4", "16", "32"]:
+    ts = series(f"bars_{per}")
+    np.savetxt(f"{out}/bars_{per}.dat", np.column_stack(
+        [ts["time"], ts["contact.left~right.normal"], ts["kinetic_energy"]]))
+
+# (f): the 3D drop.
 ts = series("drop_3d")
 t, c = centres("drop_3d", deformable)
 assert np.allclose(t, ts["time"])
@@ -266,6 +283,30 @@ plot "$data/sulsky_one_field.dat" using 1:2 with lines lw 2 lc 2 title "one shar
      "" using 1:3 with lines lw 1 lc 2 dt 2 notitle, \
      "$data/sulsky_contact.dat" using 1:3 with lines lw 2 lc 1 title "frictionless contact", \
      "" using 1:4 with lines lw 1 lc 1 dt 2 notitle
+unset multiplot
+
+set output "$png/contact_bars.png"
+set multiplot layout 1,2 title "Two elastic bars meeting end on, frictionless contact (bars_impact_frictionless.toml)"
+set title "the pair's normal contact force"
+set xlabel "time t (s)"
+set ylabel "normal force (N/m, per unit thickness)"
+set key top right
+set xrange [0.3:1.1]
+set yrange [0:14]
+set samples 801
+plot "+" using 1:((\$1 < 0.5 || \$1 > 0.9) ? 0 : 10) with lines lw 2 lc rgb "black" dt 2 title "exact: ρ c V h = 10 N/m for 2 L / c", \
+     "$data/bars_4.dat" using 1:2 with lines lw 1 lc 1 title "4 cells per bar", \
+     "$data/bars_16.dat" using 1:2 with lines lw 1 lc 2 title "16 cells per bar", \
+     "$data/bars_32.dat" using 1:2 with lines lw 1 lc 3 title "32 cells per bar"
+set title "kinetic energy"
+set ylabel "kinetic energy (J/m, per unit thickness)"
+set key bottom right
+set xrange [0:1.5]
+set yrange [0:0.21]
+plot 0.2 with lines lw 2 lc rgb "black" dt 2 title "exact after the impact: 0.2 J/m", \
+     "$data/bars_4.dat" using 1:3 with lines lw 2 lc 1 title "4 cells per bar", \
+     "$data/bars_16.dat" using 1:3 with lines lw 2 lc 2 title "16 cells per bar", \
+     "$data/bars_32.dat" using 1:3 with lines lw 2 lc 3 title "32 cells per bar"
 unset multiplot
 
 set output "$png/contact_drop_3d.png"

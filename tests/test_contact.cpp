@@ -2,7 +2,8 @@
 // the shipped cases of configs/contact/ against rigid-body mechanics
 // (a block sliding or sticking on a 30 degree incline, on a rigid plane, a
 // wall and a deformable slab, at two resolutions), Sulsky's disks with frictionless contact against
-// the same disks in one velocity field, a 3D block bouncing on a rigid
+// the same disks in one velocity field, two elastic bars meeting end on
+// against the exact impact (at three resolutions), a 3D block bouncing on a rigid
 // floor, two bonded blocks whose interface carries D [u] per unit area,
 // two poplar strands bonded by an imperfect interface in lap shear against
 // the shear-lag closed form, and bad contact input rejected with the
@@ -273,11 +274,59 @@ TEST_CASE("Sulsky's disks with frictionless contact: the normal force never pull
   CHECK(contact.measures.at("separation_final") > contact.measures.at("separation_min") + 0.1);
   // The total energy changes less than in the shared field (measured 0.043
   // against 0.075), as the issue asks. The kinetic energy left is less
-  // (0.822 against 0.893; the issue asks at least as much): not met yet,
-  // more of it stays in the disks' vibration (docs/validation/contact.md).
+  // (0.822 against 0.893; the issue asks at least as much): not met, more
+  // of it stays in the disks' vibration; NairnMPM's contact keeps 0.754
+  // against its own one field's 0.866 (docs/validation/contact.md).
   // What it keeps is bounded below, so that a contact that loses more is caught.
   CHECK(contact.errors.at("energy") <= one_field.errors.at("energy"));
   CHECK(contact.measures.at("kinetic_final") > 0.8);
+}
+
+// Two equal elastic bars meeting end on (configs/contact/bars_impact_frictionless.toml):
+// the exact answer is a contact of 2 L / c = 0.4 s at rho c V x 0.1 m =
+// 10 N/m, after which the bars part with their velocities reversed
+// (restitution 1) and nothing left vibrating [Graff 1975]. The nodal
+// contact starts up to half a cell early (the touch fraction) and spreads
+// the wave's front over a few cells, so the bars part late with part of
+// the energy left in their vibration; both errors fall with the cell. At
+// the shipped 16 cells per bar: the bounds below are the measured values
+// (MESSAGE; docs/validation/contact.md) with a margin of about a tenth.
+TEST_CASE("two elastic bars meeting end on: contact for 2 L / c, restitution 1, converging with the cell") {
+  struct Resolution {
+    std::string cell, cells, dt;
+  };
+  const std::vector<Resolution> resolutions = {
+      {"0.05", "[26, 4]", "1e-3"}, {"0.025", "[52, 8]", "5e-4"}, {"0.0125", "[104, 16]", "2.5e-4"}};
+  std::vector<double> duration_error, restitution_error;
+  for (const Resolution& r : resolutions) {
+    CAPTURE(r.cell);
+    const Case c = read_case(testing::config("contact/bars_impact_frictionless.toml"),
+                             {"grid.cell_size=" + r.cell, "grid.cells=" + r.cells, "analysis.dt=" + r.dt});
+    auto sim = testing::simulation<2, GimpShape>(c);
+    double least_normal = 0.0, first = -1.0, last = -1.0;
+    for (std::int64_t s = 0; s < c.time_control.steps; ++s) {
+      sim.advance();
+      const double normal = sim.system().contact->pairs.at(0).normal_force;
+      least_normal = std::min(least_normal, normal);
+      if (normal > 0.0) {
+        if (first < 0.0) first = sim.system().t;
+        last = sim.system().t;
+      }
+    }
+    CHECK(least_normal >= 0.0);  // never a pull
+    const RunSummary run = testing::run(c);
+    duration_error.push_back(std::abs(last - first + std::stod(r.dt) - 0.4) / 0.4);
+    restitution_error.push_back(run.errors.at("restitution"));
+    MESSAGE("bars, cells of " << r.cell << " m: contact from " << first << " to " << last << " s (exact 0.5 to 0.9), "
+                              << "restitution " << run.measures.at("restitution") << ", kinetic share at the end "
+                              << run.measures.at("kinetic_final") << ", energy error " << run.errors.at("energy"));
+  }
+  for (std::size_t i = 1; i < resolutions.size(); ++i) {
+    CHECK(duration_error[i] < duration_error[i - 1]);
+    CHECK(restitution_error[i] < restitution_error[i - 1]);
+  }
+  CHECK(duration_error.back() < 0.09);      // measured 0.079
+  CHECK(restitution_error.back() < 0.095);  // measured 0.083
 }
 
 TEST_CASE("two fields under the stick law move as one field: Sulsky's disks, USL, USF and MUSL, every transfer") {
