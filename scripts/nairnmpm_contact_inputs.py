@@ -13,7 +13,8 @@ cd DIR/<run> && NairnMPM -np 2 input.xml > out/log.txt.
 
 Every run: plane strain (analysis 10), uGIMP, 2 x 2 particles per cell,
 USL (MPMMethod 3 with SkipPostExtrapolation: the strain from the updated
-grid velocities), FLIP, NairnMPM's isotropic material (type 1). NairnMPM
+grid velocities; the *_usl_plus runs without it, NairnMPM's USL+), FLIP,
+NairnMPM's isotropic material (type 1). NairnMPM
 adds a cell on every side of the grid it is given, so each grid is given
 one cell inside the domain the flowmpm case covers. No <Friction> element:
 NairnMPM's default frictionless law, with its default detection and
@@ -31,12 +32,15 @@ def material(name, nu):
             f'    <nu>{nu}</nu>\n    <alpha>0</alpha>\n  </Material>\n')
 
 
-def document(run_dir, title, dt, end, grid, bodies, materials, contact, normals=None, position=None):
-    """The input file: grid (x0, x1, y0, y1, h) is the flowmpm case's domain."""
+def document(run_dir, title, dt, end, grid, bodies, materials, contact, normals=None, position=None,
+             usl_plus=False):
+    """The input file: grid (x0, x1, y0, y1, h) is the flowmpm case's domain; usl_plus: NairnMPM's
+    USL+ (the updated particle momenta extrapolated again before the strain update: MUSL)."""
     x0, x1, y0, y1, h = grid
     archive = "".join(f'    <GlobalArchive type="{q}"/>\n' for q in ("Kinetic Energy", "Strain Energy"))
     archive += "".join(f'    <GlobalArchive type="{q}" matname="{m}"/>\n'
                        for m in ("a", "b") for q in ("velx", "vely"))
+    skip = "" if usl_plus else "    <SkipPostExtrapolation/>\n"
     mode = ""
     if contact:
         attributes = "" if normals is None else f' Normals="{normals}"'
@@ -52,8 +56,7 @@ def document(run_dir, title, dt, end, grid, bodies, materials, contact, normals=
   </Header>
   <MPMHeader>
     <MPMMethod>3</MPMMethod>
-    <SkipPostExtrapolation/>
-    <GIMP type="uGIMP"/>
+{skip}    <GIMP type="uGIMP"/>
     <MatlPtsPerElement>4</MatlPtsPerElement>
     <Timing step="{dt}" max="{end}"/>
     <ArchiveRoot>{run_dir}/out/res</ArchiveRoot>
@@ -101,6 +104,8 @@ RUNS = {
     "disks_contact_average_gradient": lambda d: disks(d, True, normals=2),
     "disks_contact_average_gradient_position_0.8": lambda d: disks(d, True, normals=2, position=0.8),
     "disks_contact_max_gradient": lambda d: disks(d, True, normals=0),
+    "disks_one_field_usl_plus": lambda d: disks(d, False, usl_plus=True),
+    "disks_contact_usl_plus": lambda d: disks(d, True, usl_plus=True),
     "bars_one_field_h0.05": lambda d: bars(d, False, 0.05, 1e-3),
     "bars_contact_h0.05": lambda d: bars(d, True, 0.05, 1e-3),
     "bars_one_field_h0.0125": lambda d: bars(d, False, 0.0125, 2.5e-4),
