@@ -71,12 +71,7 @@ struct Wall {
   double work = 0.0;
 
   // The wall's velocity at time t (m/s; 0 along an axis it does not move on).
-  Vec<D> velocity_at(double t) const {
-    Vec<D> V = Vec<D>::Zero();
-    for (int d = 0; d < D; ++d)
-      if (velocity[d]) V[d] = (*velocity[d])(t);
-    return V;
-  }
+  Vec<D> velocity_at(double t) const { return axis_values<D>(velocity, t); }
   // The unit normal out of the material into the wall.
   Vec<D> normal() const {
     Vec<D> n = Vec<D>::Zero();

@@ -165,10 +165,7 @@ struct NodeContact {
       }
       dv[k].setZero();
     }
-    bool rigid_here = false;
-    for (std::size_t r = 0; r < contact.rigid.size(); ++r)
-      rigid_here = rigid_here || contact.volume[fields - 1 + r][n] > 0.0;
-    if (present + (rigid_here ? 1 : 0) < 2) return;
+    if (present + (contact.rigid_at(n) ? 1 : 0) < 2) return;
     Vec<D> normal;
     for (int a = 0; a < fields; ++a) {
       if (!(m[a] > 0.0)) continue;
@@ -310,10 +307,7 @@ std::vector<std::size_t> contact_nodes(const DiscreteSystem<D, Shape>& system) {
         // As NodeContact counts them: the fields with mass, and any rigid body as one.
         int present = 0;
         for (int k = 0; k < fields; ++k) present += system.field(k).mass[n] > 0.0 ? 1 : 0;
-        bool rigid_here = false;
-        for (std::size_t r = 0; r < contact.rigid.size(); ++r)
-          rigid_here = rigid_here || contact.volume[fields - 1 + r][n] > 0.0;
-        if (present + (rigid_here ? 1 : 0) >= 2) nodes.push_back(n);
+        if (present + (contact.rigid_at(n) ? 1 : 0) >= 2) nodes.push_back(n);
       });
     }
   });

@@ -49,9 +49,7 @@ void add_external_forces(DiscreteSystem<D, Shape>& system) {
     }
   }
   for (SurfaceLoad<D>& load : system.loads.surface) {
-    Vec<D> traction = Vec<D>::Zero();
-    for (int d = 0; d < D; ++d)
-      if (load.traction[d]) traction[d] = (*load.traction[d])(t);
+    const Vec<D> traction = axis_values<D>(load.traction, t);
     const double pressure = load.pressure ? (*load.pressure)(t) : 0.0;
     const ParticleBatch<D>& b = system.batches[load.batch];
     NodalField<D>& field = system.field(b.field);

@@ -45,12 +45,7 @@ struct RigidMotion {
   Vec<D> force = Vec<D>::Zero();
   double work = 0.0;
 
-  Vec<D> at(double t) const {
-    Vec<D> v = Vec<D>::Zero();
-    for (int d = 0; d < D; ++d)
-      if (velocity[d]) v[d] = (*velocity[d])(t);
-    return v;
-  }
+  Vec<D> at(double t) const { return axis_values<D>(velocity, t); }
 };
 
 // The impulses a contact pass applied, summed over the nodes (tasks/contact.hpp).
@@ -118,6 +113,13 @@ struct ContactFields {
   int deformable_count() const { return static_cast<int>(deformable.size()); }
   bool is_rigid(int field) const { return field > deformable_count(); }
   int pair_index(int a, int b) const { return pair_of[static_cast<std::size_t>(a * fields + b)]; }
+
+  // Whether any rigid body has volume at node n (the laws count them as one field).
+  bool rigid_at(std::size_t n) const {
+    for (std::size_t r = 0; r < rigid.size(); ++r)
+      if (volume[deformable.size() + r][n] > 0.0) return true;
+    return false;
+  }
 
   Vec<D> gradient(int field, std::size_t n) const {
     Vec<D> g;

@@ -18,6 +18,15 @@ namespace flowmpm {
 // Per axis, a function of time; absent axes are 0.
 using AxisFunctions = std::array<std::optional<TimeFunction>, 3>;
 
+// The vector of f's values at time t (0 along an absent axis).
+template <int D>
+Vec<D> axis_values(const AxisFunctions& f, double t) {
+  Vec<D> v = Vec<D>::Zero();
+  for (int d = 0; d < D; ++d)
+    if (f[d]) v[d] = (*f[d])(t);
+  return v;
+}
+
 // A lattice face of a particle on the surface of its body, where a
 // traction or pressure acts: at the face's centre, x_p + offset, mapped
 // to the nodes with the shape functions there.
