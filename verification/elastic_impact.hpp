@@ -30,8 +30,7 @@ struct ElasticImpact {
   double energy_error = 0.0, separation_min = std::numeric_limits<double>::infinity(), separation = 0.0;
   double kinetic = 0.0;
   double expected_restitution = std::numeric_limits<double>::quiet_NaN();  // NaN: none given
-  double approach0 = std::numeric_limits<double>::quiet_NaN();  // |u0|^2 (m^2/s^2)
-  std::array<double, 3> u0{};                                   // u0 (m/s)
+  std::array<double, 3> u0{};  // u0 (m/s), from the first sample
   double restitution = 0.0;
 
   static ElasticImpact read(ParameterTable& t, const ReferenceContext& context) {
@@ -52,7 +51,8 @@ struct ElasticImpact {
   void sample(const DiscreteSystem<D, Shape>& system) {
     const Diagnostics d = diagnostics(system, 2);
     const double energy = d.kinetic_energy + d.stored_energy;
-    if (std::isnan(energy0)) energy0 = energy;
+    const bool first = std::isnan(energy0);
+    if (first) energy0 = energy;
     energy_error = std::max(energy_error, std::abs(energy - energy0) / energy0);
     kinetic = d.kinetic_energy / energy0;
     Vec<D> centre[2] = {Vec<D>::Zero(), Vec<D>::Zero()}, momentum[2] = {Vec<D>::Zero(), Vec<D>::Zero()};
@@ -67,13 +67,14 @@ struct ElasticImpact {
     separation = (centre[0] / mass[0] - centre[1] / mass[1]).norm();
     separation_min = std::min(separation_min, separation);
     const Vec<D> u = momentum[1] / mass[1] - momentum[0] / mass[0];
-    if (std::isnan(approach0)) {
-      approach0 = u.squaredNorm();
+    if (first)
       for (int d = 0; d < D; ++d) u0[d] = u[d];
+    double along = 0.0, approach = 0.0;  // u . u0, |u0|^2
+    for (int d = 0; d < D; ++d) {
+      along += u[d] * u0[d];
+      approach += u0[d] * u0[d];
     }
-    double along = 0.0;
-    for (int d = 0; d < D; ++d) along += u[d] * u0[d];
-    restitution = approach0 > 0.0 ? -along / approach0 : 0.0;
+    restitution = approach > 0.0 ? -along / approach : 0.0;
   }
 
   // The energy at the first sample, the extremes so far and the last sample (Reference::visit_state).
@@ -84,7 +85,6 @@ struct ElasticImpact {
     f("separation_min", separation_min);
     f("separation", separation);
     f("kinetic", kinetic);
-    f("approach0", approach0);
     f("u0_x", u0[0]);
     f("u0_y", u0[1]);
     f("u0_z", u0[2]);
