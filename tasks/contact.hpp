@@ -55,6 +55,7 @@ void contact_volumes(DiscreteSystem<D, Shape>& system) {
     for_each_active_node(grid, [&](std::size_t n, const Index<D>&) {
       contact.volume[k][n] = 0.0;
       for (int d = 0; d < D; ++d) contact.volume_gradient[k][d][n] = 0.0;
+      for (auto& s : contact.spread[k].sum) s[n] = 0.0;
     });
   }
   for (auto& field : contact.displacement) {
@@ -69,6 +70,9 @@ void contact_volumes(DiscreteSystem<D, Shape>& system) {
     double* const to_volume = contact.volume[b.field - 1].data();
     double* to_gradient[D];
     for (int d = 0; d < D; ++d) to_gradient[d] = contact.volume_gradient[b.field - 1][d].data();
+    using Spread = ParticleSpread<D>;
+    double* to_spread[Spread::terms];
+    for (int t = 0; t < Spread::terms; ++t) to_spread[t] = contact.spread[b.field - 1].sum[t].data();
     // With an interface: sum_p N_Ip V_p q_p too, q the terms of the displacement fit.
     using Fit = InterfaceDisplacement<D>;
     const bool bonded = b.field <= contact.deformable_count() && !contact.displacement[b.field - 1].empty();
@@ -82,6 +86,8 @@ void contact_volumes(DiscreteSystem<D, Shape>& system) {
         // does (the r weight of V would tilt every normal outwards by
         // grad r, and leave the nodes near the axis never full).
         const double V = axisymmetric ? b.volume[p] / b.x[p][0] : b.volume[p];
+        std::array<double, Spread::terms> Vs = Spread::particle_terms(Vec<D>(b.x[p] - grid.origin));
+        for (double& q : Vs) q *= V;
         std::array<double, Fit::terms> Vq;
         if constexpr (Bonded) {
           Vq = Fit::particle_terms(Vec<D>(b.x[p] - grid.origin), Vec<D>(b.x[p] - b.x0[p]));
@@ -92,6 +98,8 @@ void contact_volumes(DiscreteSystem<D, Shape>& system) {
           store_nodes<Count>(to_volume + n, load_nodes<Count>(to_volume + n) + V * w.N);
           for (int d = 0; d < D; ++d)
             store_nodes<Count>(to_gradient[d] + n, load_nodes<Count>(to_gradient[d] + n) + V * w.dN[d]);
+          for (int t = 0; t < Spread::terms; ++t)
+            store_nodes<Count>(to_spread[t] + n, load_nodes<Count>(to_spread[t] + n) + Vs[t] * w.N);
           if constexpr (Bonded)
             for (int t = 0; t < Fit::terms; ++t)
               store_nodes<Count>(to_fit[t] + n, load_nodes<Count>(to_fit[t] + n) + Vq[t] * w.N);

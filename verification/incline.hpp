@@ -1,5 +1,5 @@
-// A body on a plane, gravity tilted by theta from the plane's normal (y)
-// towards x, in contact with the plane by the law of its [[contacts]]
+// A body on a plane (2D or 3D), gravity tilted by theta from the plane's
+// normal (y) towards x, in contact with the plane by the law of its [[contacts]]
 // entry, or else of the case's first wall node set (Coulomb coefficient
 // mu; 0 frictionless). From rest, its centre of
 // mass moves along x by (rigid-body dynamics, [Meriam 2012]):
@@ -40,8 +40,8 @@ struct Incline {
     const std::string name = t.choice("body", names);
     r.body = static_cast<int>(std::ranges::find(names, name) - names.begin());
     r.rolls = t.choice("motion", {"slide", "roll"}, "slide") == "roll";
-    t.require(s.dimension == 2 && s.gravity[1] < 0.0 && s.gravity[0] != 0.0, "type",
-              "a 2D case with gravity tilted from -y towards x for incline");
+    t.require(s.dimension >= 2 && s.gravity[1] < 0.0 && s.gravity[0] != 0.0 && s.gravity[2] == 0.0, "type",
+              "a 2D or 3D case with gravity tilted from -y towards x (no z component) for incline");
     r.g_along = s.gravity[0];
     r.g_normal = -s.gravity[1];
     r.cell = s.grid.cell_size[0];

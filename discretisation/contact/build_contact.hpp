@@ -49,6 +49,9 @@ void build_contact(const SystemSpec& spec, DiscreteSystem<D, Shape>& system) {
   contact.volume_gradient.resize(static_cast<std::size_t>(next - 1));
   for (auto& g : contact.volume_gradient)
     for (auto& component : g) component.assign(nodes, 0.0);
+  contact.spread.resize(static_cast<std::size_t>(next - 1));
+  for (auto& s : contact.spread) s.allocate(nodes);
+  contact.spread_floor = 0.01 * system.grid.h.minCoeff() * system.grid.h.minCoeff();
   contact.pair_of.assign(static_cast<std::size_t>(next * next), -1);
   for (const ContactSpec& c : spec.contacts) {
     // The deformable body first (the second may be rigid).

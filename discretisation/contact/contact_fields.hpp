@@ -9,11 +9,13 @@
 // K+1..K+R the rigid bodies'. Present in a system only when its case has
 // [[contacts]] (DiscreteSystem::contact).
 #pragma once
+#include <cmath>
 #include <string>
 #include <vector>
 
 #include "discretisation/contact/contact_laws.hpp"
 #include "discretisation/contact/interface_displacement.hpp"
+#include "discretisation/contact/particle_spread.hpp"
 #include "discretisation/grid/grid.hpp"
 #include "discretisation/loads/external_loads.hpp"
 
@@ -95,6 +97,15 @@ struct ContactFields {
   // at its surface nodes (the normals).
   std::vector<std::vector<double>> volume;
   std::vector<VectorField> volume_gradient;
+  // Per contact field k at [k - 1]: where its particles lie around each
+  // node (particle_spread.hpp), for the normals; the variance below which a
+  // direction is left out, (h / 10)^2 of the smallest cell.
+  std::vector<ParticleSpread<D>> spread;
+  double spread_floor = 0.0;
+  // The largest angle (rad) between the gradient's normal and the
+  // particles' separating direction at which the gradient's is kept:
+  // measured on the incline at four surface offsets (docs/validation/contact.md).
+  static constexpr double normal_tolerance = 0.7853981633974483;  // 45 degrees
   // Per deformable field k at [k - 1], the sums of its nodal displacement
   // (interface_displacement.hpp); empty for a field no interface bonds.
   std::vector<InterfaceDisplacement<D>> displacement;
@@ -126,12 +137,23 @@ struct ContactFields {
     for (int d = 0; d < D; ++d) g[d] = volume_gradient[field - 1][d][n];
     return g;
   }
-  // The unit normal out of field a towards b at node n: that of the body
-  // with more volume there, whose surface is the better resolved (a rigid
-  // body's is exact). False where its gradient vanishes.
+  // The unit normal out of field a towards b at node n: the volume gradient
+  // of the body with more volume there, whose surface is the better
+  // resolved (a rigid body's is exact), where it points within
+  // `normal_tolerance` of the direction that separates the two bodies'
+  // particles at the node (particle_spread.hpp); else that direction. The
+  // gradient is no surface's where the node lies deep inside a body (it
+  // vanishes there, or takes the sign of a particle row on a node plane)
+  // or near a face the other body does not touch (the end of a floor
+  // beside a block on it): docs/theory/contact.md. False where neither
+  // gives a direction.
   bool outward_normal(int a, int b, std::size_t n, Vec<D>& normal) const {
     const bool from_b = is_rigid(b) || volume[b - 1][n] > volume[a - 1][n];
-    const Vec<D> g = from_b ? Vec<D>(-gradient(b, n)) : gradient(a, n);
+    Vec<D> g = from_b ? Vec<D>(-gradient(b, n)) : gradient(a, n);
+    Vec<D> apart;
+    if (separating_normal(spread[a - 1], volume[a - 1][n], spread[b - 1], volume[b - 1][n], n, spread_floor, apart) &&
+        !(g.norm() > 0.0 && g.dot(apart) >= std::cos(normal_tolerance) * g.norm()))
+      g = apart;
     const double length = g.norm();
     if (!(length > 0.0)) return false;
     normal = g / length;

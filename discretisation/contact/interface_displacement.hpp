@@ -22,9 +22,8 @@
 #include <array>
 #include <vector>
 
-#include <Eigen/Eigenvalues>
-
 #include "core/vec.hpp"
+#include "discretisation/contact/particle_spread.hpp"
 
 namespace flowmpm {
 
@@ -67,16 +66,7 @@ struct InterfaceDisplacement {
     for (int i = 0; i < D; ++i)
       for (int j = 0; j < D; ++j) K(i, j) = sum[t++][n] / volume - x_bar[i] * u_bar[j];
     // C^-1 (x_bar - x_I) over the directions the particles spread in.
-    const Eigen::SelfAdjointEigenSolver<Matrix> eigen(C);
-    const Vec<D> offset = x_bar - node;
-    Vec<D> scaled = Vec<D>::Zero();
-    for (int k = 0; k < D; ++k) {
-      const double variance = eigen.eigenvalues()[k];
-      if (variance > floor) {
-        const Vec<D> axis = eigen.eigenvectors().col(k);
-        scaled += (axis.dot(offset) / variance) * axis;
-      }
-    }
+    const Vec<D> scaled = inverse_over_spread<D>(C, Vec<D>(x_bar - node), floor);
     return u_bar - K.transpose() * scaled;
   }
 };

@@ -87,11 +87,23 @@ void add_axis_node_set(TableReader& grid, std::vector<TableReader>& node_sets, S
   const double cell = -origin / h;
   grid.require(std::abs(cell - std::round(cell)) <= 1e-6, "origin",
                "the axis r = 0 on a plane of grid nodes in axisymmetric (origin x = -k * cell_size, k >= 0)");
+  // A set the case names "axis" (as other codes name it) is taken for the
+  // automatic one when it holds exactly what that holds: the plane x = 0,
+  // the radial velocity 0 and nothing else.
   for (std::size_t i = 0; i < c.node_sets.size(); ++i) {
-    if (c.node_sets[i].name == "axis") {
-      node_sets.at(i).fail("name", "a name other than \"axis\" where the grid reaches r = 0 in axisymmetric "
-                                   "(that name is the axis's, which holds the radial velocity at 0)");
+    const NodeSetSpec& s = c.node_sets[i];
+    if (s.name != "axis") continue;
+    const auto zero = [](const std::optional<TimeFunction>& f) {
+      return f && std::ranges::all_of(f->points, [](const auto& p) { return p.second == 0.0; });
+    };
+    const bool is_the_axis = s.is_plane && s.axis == 0 && s.at == 0.0 && zero(s.velocity[0]) && !s.velocity[1] &&
+                             !s.velocity[2] && !s.wall && !s.temperature && !s.concentration;
+    if (!is_the_axis) {
+      node_sets.at(i).fail("name", "a name other than \"axis\" where the grid reaches r = 0 in axisymmetric, or "
+                                   "the axis itself (plane = \"x\", at = 0.0, velocity = { x = 0.0 } and nothing "
+                                   "else): the axis holds the radial velocity at 0");
     }
+    return;  // the case's own axis
   }
   // Symmetry about the axis: v_r = 0 on it; the shape functions that reach
   // past it fold onto their mirror nodes as at any held plane (MirrorPlane).

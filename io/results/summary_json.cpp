@@ -66,6 +66,7 @@ std::string summary_json(const RunSummary& s) {
   field("expansion_work", number(s.expansion_work));
   field("load_work", number(s.load_work));
   field("energy_error", number(s.energy_error));
+  if (s.energy_warning) field("energy_warning", quoted_string(*s.energy_warning));
   if (s.damping_dissipated) field("damping_dissipated", number(*s.damping_dissipated));
   if (s.contact_work) field("contact_work", number(*s.contact_work));
 

@@ -43,6 +43,10 @@ struct RunSummary {
   double kinetic_energy = 0.0, stored_energy = 0.0, dissipated_energy = 0.0;
   double gravity_work = 0.0, boundary_work = 0.0, expansion_work = 0.0, load_work = 0.0;
   double energy_error = 0.0;
+  // Where energy_error ends above energy_warning_threshold: the warning
+  // the log gave, with its likely cause and remedy.
+  static constexpr double energy_warning_threshold = 0.10;
+  std::optional<std::string> energy_warning;
   // With damping: the energy it removed (J, >= 0; per unit thickness in 2D),
   // part of dissipated_energy (docs/guide/loads.md).
   std::optional<double> damping_dissipated;
