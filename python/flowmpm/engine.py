@@ -52,30 +52,39 @@ def interactive():
 
 
 def _execute(arguments, show):
-    """Runs the program; returns its exit status, its error messages and its
-    standard output. With `show`, its log is copied to stderr as it comes."""
-    process = subprocess.Popen([program()] + arguments, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                               text=True, errors="replace")
+    """Runs the program; returns its exit status and its error messages.
+    With `show`, its log is copied to stderr as it comes."""
     errors = []
-    try:
-        for line in process.stderr:
-            if show:
-                sys.stderr.write(line)
-                sys.stderr.flush()
-            m = _LOG_LINE.match(line.rstrip("\n"))
-            if m:
-                if m.group(1) in ("error", "critical"):
-                    errors.append(m.group(2))
-            elif line.strip():  # the command line's complaints, "flowmpm: ..."
-                errors.append(line.strip().removeprefix("flowmpm: "))
-        out = process.stdout.read()
-        status = process.wait()
-    except KeyboardInterrupt:
-        # The run stops after its step and keeps a checkpoint, as on Ctrl-C.
-        process.send_signal(signal.SIGINT)
-        process.wait()
-        raise
-    return status, errors, out
+    with subprocess.Popen([program()] + arguments, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True,
+                          errors="replace") as process:
+        try:
+            for line in process.stderr:
+                if show:
+                    sys.stderr.write(line)
+                    sys.stderr.flush()
+                m = _LOG_LINE.match(line.rstrip("\n"))
+                if m:
+                    if m.group(1) in ("error", "critical"):
+                        errors.append(m.group(2))
+                elif line.strip():  # the command line's complaints, "flowmpm: ..."
+                    errors.append(line.strip().removeprefix("flowmpm: "))
+            status = process.wait()
+        except KeyboardInterrupt:
+            # The run stops after its step and keeps a checkpoint, as on Ctrl-C.
+            process.send_signal(signal.SIGINT)
+            process.wait()
+            raise
+    return status, errors
+
+
+def _launch(arguments, progress, **options):
+    """_execute with the options given (`threads=2`: --threads 2), and
+    --quiet unless the log is shown (`progress`, default: interactive)."""
+    show = interactive() if progress is None else progress
+    for name, value in options.items():
+        if value:
+            arguments += [f"--{name}", str(value)]
+    return _execute(arguments + ([] if show else ["--quiet"]), show)
 
 
 def _case_of(case_or_path):
@@ -104,7 +113,7 @@ def check(case_or_path, set=None):
     with tempfile.TemporaryDirectory() as scratch:
         if case.path is None:
             case.save(os.path.join(scratch, f"{case.name}.toml"))
-        status, errors, _ = _execute(["check", case.path] + case.set_options(), show=False)
+        status, errors = _execute(["check", case.path] + case.set_options(), show=False)
         if status != 0:
             _raise_case_error(errors, case.path)
 
@@ -133,14 +142,9 @@ def run(case_or_path, output=None, threads=None, set=None, restart=None, progres
     if case.path is None:
         os.makedirs(directory, exist_ok=True)
         case.save(os.path.join(directory, "case.toml"))
-    show = interactive() if progress is None else progress
     arguments = ["run", case.path] + case.set_options()
     arguments += ["--restart", directory] if restart else ["--output", directory]
-    if threads:
-        arguments += ["--threads", str(threads)]
-    if not show:
-        arguments.append("--quiet")
-    status, errors, _ = _execute(arguments, show)
+    status, errors = _launch(arguments, progress, threads=threads)
     if status == 1:
         _raise_case_error(errors, case.path)
     if status != 0:
@@ -169,15 +173,8 @@ def sweep(sweep_file, output=None, jobs=None, threads=None, progress=None):
         with open(sweep_file, "rb") as f:
             named = tomllib.load(f).get("output")
         output = named or os.path.join("results", "sweeps", Path(sweep_file).stem)
-    show = interactive() if progress is None else progress
-    arguments = ["sweep", sweep_file, "--output", os.fspath(output)]
-    if jobs:
-        arguments += ["--jobs", str(jobs)]
-    if threads:
-        arguments += ["--threads", str(threads)]
-    if not show:
-        arguments.append("--quiet")
-    status, errors, _ = _execute(arguments, show)
+    status, errors = _launch(["sweep", sweep_file, "--output", os.fspath(output)], progress, jobs=jobs,
+                                threads=threads)
     if status == 1:
         _raise_case_error(errors, sweep_file)
     if status == 130:

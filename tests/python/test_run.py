@@ -37,14 +37,17 @@ class RoundTripTest(ScratchTest):
         eps = -SPEED * r.times / HEIGHT
         # The strain is kinematic: the top node's prescribed motion, exact to round-off.
         np.testing.assert_allclose(strain[:, :, yy], eps[:, None] * np.ones((1, 8)), rtol=0, atol=1e-15)
-        # The stress lags the closed form by the block's inertia: a wave
-        # crosses the 1 m block in H / c = 0.032 s; USL ends 0.05 % from
-        # -1 Pa at t = 0.1 s (README: -0.999482 at dt = 0.01; measured here
-        # -0.99948 at dt = 0.001). 0.2 % bounds it; the stress of t = 0 is 0.
+        # The stresses carry the block's lateral inertia: it starts at rest
+        # and its top is pushed at once, so it vibrates sideways (a wave
+        # crosses it in H / c_p = 0.03 s) about the quasi-static closed form.
+        # Measured at t = 0.1 s (USL, dt = 0.001 s): sigma_yy -0.98663 Pa
+        # (1.3 % off), sigma_xx = sigma_zz = 0.0334 Pa, eps_xx = 2.24e-4
+        # (12 % above nu |eps_yy|). The bounds: 2 %, 5 % of |sigma_yy|, 15 %.
+        # A wrong column would be off by 100 % (yy against xx).
         final = stress[-1]
-        np.testing.assert_allclose(final[:, yy], E * eps[-1], rtol=2e-3)
-        self.assertLess(np.abs(final[:, [xx, zz]]).max(), 2e-3 * E * abs(eps[-1]))
-        np.testing.assert_allclose(strain[-1][:, [xx, zz]], -NU * eps[-1], rtol=0.2)
+        np.testing.assert_allclose(final[:, yy], E * eps[-1], rtol=0.02)
+        self.assertLess(np.abs(final[:, [xx, zz]]).max(), 0.05 * E * abs(eps[-1]))
+        np.testing.assert_allclose(strain[-1][:, [xx, zz]], -NU * eps[-1], rtol=0.15)
         self.assertEqual(np.abs(stress[0]).max(), 0.0)
 
         # One body: its rows are all rows; timeseries.csv's mean (volume
