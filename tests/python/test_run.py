@@ -7,6 +7,7 @@ import unittest
 import numpy as np
 
 import flowmpm
+from flowmpm.tables import columns_of, read_csv
 from support import ScratchTest, uniaxial_case
 
 E, NU, SPEED, HEIGHT = 1000.0, 0.2, 0.01, 1.0  # Pa, -, m/s (the top's), m
@@ -59,6 +60,9 @@ class RoundTripTest(ScratchTest):
         self.assertAlmostEqual(float(np.asarray(ts["block.stress_yy"])[-1]), mean_yy, delta=1e-12)
         self.assertAlmostEqual(r.summary["bodies"][0]["mean_stress"]["yy"], mean_yy, delta=1e-12)
         np.testing.assert_allclose(np.asarray(ts["time"]), r.times, rtol=1e-12)
+        plain = read_csv(os.path.join(output, "timeseries.csv"), use_pandas=False)   # the table without pandas
+        self.assertEqual(plain.dtype.names, tuple(columns_of(ts)))
+        np.testing.assert_array_equal(plain["block.stress_yy"], np.asarray(ts["block.stress_yy"]))
         self.assertEqual(r.history("position", 7).shape, (len(r.steps), 3))
 
 
