@@ -82,6 +82,17 @@ class BodiesTest(ScratchTest):
         with self.assertRaises(KeyError):
             r.field("position", body="lid")
 
+    def test_a_run_that_fails_raises_simulation_error(self):
+        # The block sent left at 20 m/s leaves the 4 m grid within the 0.5 s.
+        output = os.path.join(self.scratch, "failed")
+        with self.assertRaises(flowmpm.SimulationError) as caught:
+            flowmpm.run(three_bodies(), output=output, set={"bodies.2.velocity": [-20.0, 0.0]})
+        e = caught.exception
+        self.assertEqual((e.status, e.output), (2, output))
+        self.assertIn("outside the grid", e.message)
+        with open(os.path.join(output, "summary.json")) as f:
+            self.assertIn('"status": "failed: ', f.read())
+
 
 if __name__ == "__main__":
     unittest.main()
