@@ -70,10 +70,8 @@ void ResultsWriter::open(const SimulationBase& sim, bool restart) {
   const auto& dir = case_.output.directory;
   ResultsMetadata metadata{FLOWMPM_VERSION, run_internal::source_commit(), case_.name, case_.file.string(),
                            sim.dimension(), stress_state_name(sim.stress_state()), case_.scheme->label,
-                           sim.shape_function(), {}};
+                           sim.shape_function(), {}, body_names_, body_rows(sim, body_count_)};
   for (const NamedMaterial& m : case_.system.materials) metadata.materials.push_back(m.name);
-  metadata.bodies = body_names_;
-  metadata.body_rows = body_rows(sim, body_count_);
   if (restart) {
     const auto [h5_from, csv_from] = continuation(sim);
     h5_.emplace(dir / "results.h5", metadata, h5_from);
