@@ -6,12 +6,9 @@ is text. Column names are the files' own ("block.stress_yy").
 """
 import csv
 
-import numpy as np
+import importlib.util
 
-try:
-    import pandas
-except ImportError:
-    pandas = None
+import numpy as np
 
 
 def _number(text):
@@ -35,11 +32,13 @@ def make_table(columns, use_pandas=None, text=()):
         else:
             typed[name] = np.array(["" if v is None else str(v) for v in values], dtype=object)
     if use_pandas is None:
-        use_pandas = pandas is not None
+        use_pandas = importlib.util.find_spec("pandas") is not None
     if use_pandas:
-        if pandas is None:
+        try:
+            import pandas  # only here: importing it takes seconds
+        except ImportError:
             raise ImportError("a DataFrame needs pandas (Debian's python3-pandas); without it, use_pandas=False "
-                              "gives a numpy structured array")
+                              "gives a numpy structured array") from None
         return pandas.DataFrame(typed, columns=names)
     length = len(next(iter(typed.values()))) if typed else 0
     table = np.empty(length, dtype=[(n, typed[n].dtype) for n in names])
