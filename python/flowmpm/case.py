@@ -6,6 +6,7 @@ or "bodies[0].velocity" as the engine's messages name them).
 """
 import copy
 import os
+import re
 import tomllib
 
 from .errors import CaseError
@@ -72,7 +73,10 @@ class Case:
         try:
             data = tomllib.loads(text)
         except tomllib.TOMLDecodeError as e:
-            raise CaseError(f"not valid TOML: {e}", file=os.fspath(path), line=getattr(e, "lineno", None)) from None
+            where = re.search(r" \(at line (\d+), column \d+\)", str(e))  # tomllib's only account of the line
+            line = int(where.group(1)) if where else None
+            message = str(e).replace(where.group(0), "") if where else str(e)
+            raise CaseError(f"not valid TOML: {message}", file=os.fspath(path), line=line) from None
         return cls(data, path, text)
 
     @property

@@ -111,6 +111,15 @@ class CheckTest(ScratchTest):
         self.assertEqual(e.message, "unknown key (did you mean output.every?)")
         self.assertEqual(str(e), f"{path}:{line}: output.evry: {e.message}")
 
+    def test_a_file_that_is_not_toml_names_its_line(self):
+        path = os.path.join(self.scratch, "cut.toml")
+        with open(path, "w") as f:
+            f.write("[grid]\ncells = [1,\norigin = [0.0]\n")    # the array never closed
+        with self.assertRaises(flowmpm.CaseError) as caught:
+            flowmpm.Case.load(path)
+        self.assertEqual((caught.exception.file, caught.exception.line), (path, 3))
+        self.assertTrue(caught.exception.message.startswith("not valid TOML: "))
+
     def test_a_bad_value_set_in_python_names_the_key(self):
         case = flowmpm.Case.load(USL).set("analysis.dt", 0.05)   # above the stable limit
         with self.assertRaises(flowmpm.CaseError) as caught:
