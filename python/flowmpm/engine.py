@@ -137,6 +137,8 @@ def run(case_or_path, output=None, threads=None, set=None, restart=None, progres
 
     Raises CaseError for a case the engine rejects (nothing is run) and
     SimulationError for a run that fails or is interrupted."""
+    if output is not None and restart is not None:
+        raise ValueError("run: give output or restart, not both (a restart writes into the directory it continues)")
     case = _with_sets(_case_of(case_or_path), set)
     directory = os.fspath(restart or output or output_directory(case))
     if case.path is None:
