@@ -15,14 +15,13 @@ import signal
 import subprocess
 import sys
 import tempfile
-import tomllib
 import warnings
 from pathlib import Path
 
 from .case import Case
 from .errors import CaseError, SimulationError
 from .results import Results
-from .sweep import Sweep
+from .sweep import Sweep, sweep_directory
 
 # spdlog's pattern in apps/flowmpm.cpp: "[14:16:34.123] error message".
 _LOG_LINE = re.compile(r"\[\d\d:\d\d:\d\d\.\d{3}\] (\w+) (.*)")
@@ -172,9 +171,7 @@ def sweep(sweep_file, output=None, jobs=None, threads=None, progress=None):
     CaseError."""
     sweep_file = os.fspath(sweep_file)
     if output is None:
-        with open(sweep_file, "rb") as f:
-            named = tomllib.load(f).get("output")
-        output = named or os.path.join("results", "sweeps", Path(sweep_file).stem)
+        output = sweep_directory(sweep_file)
     status, errors = _launch(["sweep", sweep_file, "--output", os.fspath(output)], progress, jobs=jobs,
                                 threads=threads)
     if status == 1:

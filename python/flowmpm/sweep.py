@@ -4,6 +4,7 @@ import csv
 import json
 import math
 import os
+import tomllib
 
 import numpy as np
 
@@ -11,6 +12,15 @@ from .tables import columns_of, make_table
 
 # sweep.csv's columns after the varied keys, before the error norms.
 _RUN_COLUMNS = ("status", "particles", "steps", "wall_seconds", "particle_steps_per_second", "rank")
+
+
+def sweep_directory(sweep_file):
+    """Where `flowmpm sweep SWEEP_FILE` writes without --output: the sweep
+    file's `output`, else results/sweeps/<its stem> (relative to the
+    working directory)."""
+    with open(sweep_file, "rb") as f:
+        named = tomllib.load(f).get("output")
+    return named or os.path.join("results", "sweeps", os.path.splitext(os.path.basename(sweep_file))[0])
 
 
 def _summary_columns(summary):
@@ -45,8 +55,8 @@ def pareto_front(seconds, error):
 
 
 class Sweep:
-    """The results of a sweep in its output directory (holding sweep.csv
-    and cases/NNN/). Attributes: `directory`; `keys` (the varied keys);
+    """The results of a sweep: its output directory holds sweep.csv and
+    cases/NNN/. Attributes: `directory`; `keys` (the varied keys);
     `errors` (the error norms' columns); `table`: one row per case, the
     columns of sweep.csv (`case` as its folder's name, the varied keys,
     status, particles, steps, wall_seconds in s, particle_steps_per_second,
@@ -54,8 +64,11 @@ class Sweep:
     sweep.csv lacks (see _summary_columns); a pandas DataFrame, or a numpy
     structured array without pandas."""
 
-    def __init__(self, directory, use_pandas=None):
-        self.directory = os.fspath(directory)
+    def __init__(self, path, use_pandas=None):
+        """`path`: the sweep's output directory, or its sweep file (the
+        directory it names)."""
+        path = os.fspath(path)
+        self.directory = sweep_directory(path) if path.endswith(".toml") else path
         with open(os.path.join(self.directory, "sweep.csv"), newline="", encoding="utf-8") as f:
             rows = list(csv.reader(f))
         header = rows[0]

@@ -13,6 +13,7 @@ from flowmpm.tables import columns_of
 from support import ROOT, ScratchTest
 
 SWEEP = """base = "{base}"
+output = "{output}"
 
 [vary]
 "analysis.scheme" = ["usl", "musl"]
@@ -29,8 +30,11 @@ class SweepTest(ScratchTest):
     def test_the_table_joins_each_row_with_its_case(self):
         sweep_file = os.path.join(self.scratch, "bar.toml")
         with open(sweep_file, "w") as f:
-            f.write(SWEEP.format(base=os.path.join(ROOT, "configs", "verification", "bar_vibration_small.toml")))
-        s = flowmpm.sweep(sweep_file, output=os.path.join(self.scratch, "out"), threads=2)
+            f.write(SWEEP.format(base=os.path.join(ROOT, "configs", "verification", "bar_vibration_small.toml"),
+                                 output=os.path.join(self.scratch, "out")))
+        s = flowmpm.sweep(sweep_file, threads=2)               # into the sweep file's output
+        self.assertEqual(s.directory, os.path.join(self.scratch, "out"))
+        self.assertEqual(flowmpm.Sweep(sweep_file).directory, s.directory)
         self.assertEqual(s.keys, ["analysis.scheme", "grid.cell_size", "grid.cells", "grid.origin", "analysis.dt"])
         self.assertIn("displacement", s.errors)
         columns = columns_of(s.table)
