@@ -103,9 +103,6 @@ class Sweep:
         with `path`, also saves the figure there. Needs matplotlib (Debian's
         python3-matplotlib)."""
         try:
-            import matplotlib
-            if ax is None and path is not None and not os.environ.get("DISPLAY"):
-                matplotlib.use("Agg")
             import matplotlib.pyplot as plt
         except ImportError:
             raise ImportError("plot_speed_vs_error needs matplotlib (Debian's python3-matplotlib)") from None
