@@ -48,10 +48,11 @@ class SweepTest(ScratchTest):
         np.testing.assert_array_equal(s.column("analysis.dt").astype(float), s.column("dt"))
         np.testing.assert_array_equal(s.column("steps"), np.round(0.4 / s.column("dt")))   # 320 and 640
         np.testing.assert_allclose(s.column("displacement"), s.column("errors.displacement"), rtol=1e-12)
-        # Halving the cells cuts the displacement error (bspline2, second order: by about 4).
+        # Halving the cells cuts the displacement error by about 4 (bspline2,
+        # second order; measured 3.99 for USL and 3.97 for MUSL, 4.6e-3 to 1.2e-3).
         error = s.column("displacement")
         for coarse, fine in ((0, 1), (2, 3)):
-            self.assertLess(error[fine], 0.5 * error[coarse])
+            self.assertGreater(error[coarse] / error[fine], 3.0)
 
     def test_pareto_front(self):
         seconds = [1.0, 2.0, 3.0, 4.0, 0.5]
