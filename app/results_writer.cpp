@@ -1,12 +1,43 @@
 #include "app/results_writer.hpp"
 
 #include <algorithm>
+#include <cstdint>
+#include <stdexcept>
 
 #include <spdlog/fmt/fmt.h>
 
 #include "app/run_case_internal.hpp"
+#include "engine/simulation.hpp"
 
 namespace flowmpm {
+
+namespace {
+
+// Where each body's rows are (ResultsMetadata::body_rows): the system makes
+// one batch per body and gives ids body by body, in the spec's order
+// (discretisation/build_system.hpp); checked, since the files promise it.
+std::vector<std::int64_t> body_rows(const SimulationBase& sim, std::size_t body_count) {
+  return with_dimension_and_shape(sim.dimension(), sim.shape(), [&]<int D, class Shape>() {
+    const auto& system = dynamic_cast<const Simulation<D, Shape>&>(sim).system();
+    std::vector<std::int64_t> low(body_count, INT64_MAX), high(body_count, -1), count(body_count, 0);
+    for (const auto& b : system.batches) {
+      for (const std::uint32_t id : b.id) {
+        low[b.body] = std::min<std::int64_t>(low[b.body], id);
+        high[b.body] = std::max<std::int64_t>(high[b.body], id);
+      }
+      count[b.body] += static_cast<std::int64_t>(b.size());
+    }
+    std::vector<std::int64_t> rows{0};
+    for (std::size_t body = 0; body < body_count; ++body) {
+      if (count[body] > 0 && (low[body] != rows.back() || high[body] - low[body] + 1 != count[body]))
+        throw std::logic_error("particle ids are not given body by body");
+      rows.push_back(rows.back() + count[body]);
+    }
+    return rows;
+  });
+}
+
+}  // namespace
 
 ResultsWriter::ResultsWriter(const Case& c, const RunOptions& options, const SimulationBase& sim,
                              std::int64_t planned_steps, std::vector<std::string> error_names)
@@ -39,7 +70,7 @@ void ResultsWriter::open(const SimulationBase& sim, bool restart) {
   const auto& dir = case_.output.directory;
   ResultsMetadata metadata{FLOWMPM_VERSION, run_internal::source_commit(), case_.name, case_.file.string(),
                            sim.dimension(), stress_state_name(sim.stress_state()), case_.scheme->label,
-                           sim.shape_function(), {}};
+                           sim.shape_function(), {}, body_names_, body_rows(sim, body_count_)};
   for (const NamedMaterial& m : case_.system.materials) metadata.materials.push_back(m.name);
   if (restart) {
     const auto [h5_from, csv_from] = continuation(sim);

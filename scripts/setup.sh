@@ -1,20 +1,22 @@
 #!/usr/bin/env bash
 # Sets up flowmpm on a Debian machine: installs the Debian packages that are
 # missing and builds in build/ (Release).
-#   scripts/setup.sh           the program only (build/flowmpm)
+#   scripts/setup.sh           the program only (build/flowmpm) and the Python
+#                              package's needs (numpy, h5py)
 #   scripts/setup.sh --tests   also what the test suite needs (ParaView's
-#                              pvpython, h5py, OpenMPI), and builds everything
+#                              pvpython, matplotlib, OpenMPI), and builds everything
 # Prints one line per stage and the build's progress; the package manager's
 # own output is kept in build/setup-apt.log.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(python3 cmake g++ make ninja-build git libtbb-dev libeigen3-dev libhdf5-dev hdf5-tools libspdlog-dev
-          doctest-dev libtomlplusplus-dev libcli11-dev gnuplot-nox)
+          doctest-dev libtomlplusplus-dev libcli11-dev gnuplot-nox python3-numpy python3-h5py)
 target=(--target flowmpm)
 mpi=()
 if [[ ${1:-} == --tests ]]; then
-  packages+=(python3-h5py python3-paraview libopenmpi-dev openmpi-bin)
+  # matplotlib: the test of the Python package's speed-against-error plot.
+  packages+=(python3-paraview python3-matplotlib libopenmpi-dev openmpi-bin)
   target=()
   # The suite tests flowmpm sweep --mpi. A build/ configured by the program's
   # setup, before OpenMPI was installed, has cached that MPI is missing:
@@ -46,6 +48,17 @@ if ((${#missing[@]})); then
   echo "setup: packages installed"
 else
   echo "setup: all ${#packages[@]} Debian packages present"
+fi
+
+# The Python package python/flowmpm: importable by Debian's python3 from any
+# directory, through a .pth file in the user's site-packages that names
+# this checkout's python/ (docs/guide/python.md).
+if [[ -x /usr/bin/python3 ]]; then
+  site=$(/usr/bin/python3 -m site --user-site)
+  if [[ $(cat "$site/flowmpm.pth" 2>/dev/null) != "$PWD/python" ]]; then
+    mkdir -p "$site" && echo "$PWD/python" >"$site/flowmpm.pth"
+    echo "setup: python3 imports flowmpm from $PWD/python ($site/flowmpm.pth)"
+  fi
 fi
 
 # Ninja starts each file as soon as a core is free, where make finishes

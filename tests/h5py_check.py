@@ -2,7 +2,8 @@
 
     python3 h5py_check.py RESULTS.xdmf PARTICLES DIMENSION
 
-Asserts the root metadata; the connectivity /particle_index = 0..n-1; that
+Asserts the root metadata (the bodies' rows: body_rows from 0 to n, one
+range per body); the connectivity /particle_index = 0..n-1; that
 /steps links every step file of steps/ and nothing else; at every step,
 read through results.h5's links: its step number, the id column 0..n-1
 (rows in particle id order), the
@@ -38,6 +39,10 @@ def main(argv):
             check(isinstance(a[key], str), f"attribute {key} is not a string: {a[key]!r}")
         check(len(a["materials"]) >= 1 and all(isinstance(m, str) for m in a["materials"]),
               f"materials {a['materials']!r}")
+        rows = a["body_rows"]
+        check(len(a["bodies"]) >= 1 and all(isinstance(b, str) for b in a["bodies"]), f"bodies {a['bodies']!r}")
+        check(len(rows) == len(a["bodies"]) + 1 and rows[0] == 0 and rows[-1] == particles and
+              np.all(np.diff(rows) >= 0), f"body_rows {rows!r}")
         check(np.array_equal(f["particle_index"][()], np.arange(particles)), "particle_index is not 0..n-1")
         names = sorted(f["steps"])
         files = sorted(n[: -len(".h5")] for n in os.listdir(os.path.join(os.path.dirname(xdmf), "steps"))

@@ -112,7 +112,7 @@ ParticleSnapshot make_snapshot(std::int64_t step, double time, std::size_t count
 
 ResultsMetadata metadata() {
   return {"0.1.0", "abc123", "test case", "cases/test.toml", 2, "plane strain", "USL", "bspline2",
-          {"steel", "rubber \"soft\""}};
+          {"steel", "rubber \"soft\""}, {"block", "lid"}, {0, 3, 5}};
 }
 
 // The snapshot without the fields named.
@@ -265,6 +265,16 @@ TEST_CASE("ResultsH5 writes steps that read back exactly") {
   CHECK(h5.string_attribute("/", "shape_function") == "bspline2");
   CHECK(h5.string_attribute("/", "tensor_components") == "xx yy zz xy yz xz");
   CHECK(contains(h5.string_attribute("/", "units"), "SI"));
+  // The bodies' rows: 64-bit integers, one more than the bodies.
+  const hid_t rows = H5Aopen(h5.file, "body_rows", H5P_DEFAULT);
+  REQUIRE(rows >= 0);
+  const hid_t space = H5Aget_space(rows);
+  CHECK(H5Sget_simple_extent_npoints(space) == 3);
+  std::int64_t values[3] = {};
+  CHECK(H5Aread(rows, H5T_NATIVE_INT64, values) >= 0);
+  CHECK((values[0] == 0 && values[1] == 3 && values[2] == 5));
+  H5Sclose(space);
+  H5Aclose(rows);
 }
 
 // Issue 15: a step file that fails while HDF5 writes it (here: the file

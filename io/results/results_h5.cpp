@@ -82,6 +82,17 @@ void write_string_attribute(hid_t object, const char* name, const std::string& v
   write_string_attribute(object, name, std::vector<std::string>{value}, false, file, where);
 }
 
+// A 1D array attribute of 64-bit integers.
+void write_array_attribute(hid_t object, const char* name, const std::vector<std::int64_t>& values,
+                           const std::string& file, const std::string& where) {
+  const std::string what = "cannot write attribute " + where + "@" + name;
+  const hsize_t n = values.size();
+  Hdf5Handle space(H5Screate_simple(1, &n, nullptr), H5Sclose);
+  if (!space.valid()) fail(file, what);
+  Hdf5Handle attribute(H5Acreate2(object, name, H5T_STD_I64LE, space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+  if (!attribute.valid() || H5Awrite(attribute.get(), H5T_NATIVE_INT64, values.data()) < 0) fail(file, what);
+}
+
 // One dataset of count x components values (1D when components == 1).
 struct Field {
   const char* name;
@@ -289,6 +300,10 @@ void ResultsH5::write_index() const {
     write_string_attribute(root, "vector_components", vector_output_components_of(m.stress_state), file, "/");
     write_string_attribute(root, "rows", "particle id: row i is the same particle at every step", file, "/");
     write_string_attribute(root, "materials", m.materials, true, file, "/");
+    if (!m.bodies.empty()) {  // HDF5 writes no empty attribute
+      write_string_attribute(root, "bodies", m.bodies, true, file, "/");
+      write_array_attribute(root, "body_rows", m.body_rows, file, "/");
+    }
     // The connectivity 0..n-1: every step's topology reads its first n.
     if (index_length_ > 0) {
       std::vector<std::int32_t> index(index_length_);

@@ -30,6 +30,11 @@ struct ResultsMetadata {
   std::string stress_state;  // "3D", "plane strain", "plane stress", "uniaxial stress"
   std::string scheme, shape_function;
   std::vector<std::string> materials;  // names, by the index the `material` field holds
+  // The case's bodies: their names and where their rows are. Body b's
+  // particles are rows body_rows[b] to body_rows[b + 1] - 1 (bodies.size()
+  // + 1 values): ids are given body by body.
+  std::vector<std::string> bodies;
+  std::vector<std::int64_t> body_rows;
 };
 
 class ResultsH5 {
