@@ -28,21 +28,21 @@ _LOG_LINE = re.compile(r"\[\d\d:\d\d:\d\d\.\d{3}\] (\w+) (.*)")
 
 
 def program():
-    """The flowmpm program: $FLOWMPM, build/flowmpm of this checkout, or
-    flowmpm on PATH. Raises FileNotFoundError saying where it looked."""
+    """The flowmpm program: build/flowmpm of this checkout, else $FLOWMPM,
+    else flowmpm on PATH. Raises FileNotFoundError saying where it looked."""
+    built = Path(__file__).resolve().parents[2] / "build" / "flowmpm"
+    if os.access(built, os.X_OK):
+        return str(built)
     named = os.environ.get("FLOWMPM")
     if named:
         if not os.access(named, os.X_OK):
             raise FileNotFoundError(f"FLOWMPM={named}: not an executable file")
         return named
-    built = Path(__file__).resolve().parents[2] / "build" / "flowmpm"
-    if os.access(built, os.X_OK):
-        return str(built)
     on_path = shutil.which("flowmpm")
     if on_path:
         return on_path
-    raise FileNotFoundError(f"no flowmpm program: FLOWMPM is not set, {built} is not built "
-                            "(scripts/setup.sh builds it) and none is on PATH")
+    raise FileNotFoundError(f"no flowmpm program: {built} is not built (scripts/setup.sh builds it), FLOWMPM is "
+                            "not set and none is on PATH")
 
 
 def interactive():
