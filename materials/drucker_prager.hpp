@@ -51,7 +51,8 @@ struct DruckerPrager {
   struct Parameters : FrictionalParameters {
     Fit fit = Fit::plane_strain;
   };
-  using State = FrictionalState;
+  // Its own type (the engine keeps one state array per model): frictional.hpp.
+  struct State : FrictionalState {};
   State initial_state(const ParticleInit&) const { return {}; }
 
   static constexpr auto state_variables = frictional_state_variables;

@@ -46,7 +46,8 @@ struct MohrCoulomb {
   static constexpr const char* type_name = "mohr_coulomb";
 
   using Parameters = FrictionalParameters;
-  using State = FrictionalState;
+  // Its own type (the engine keeps one state array per model): frictional.hpp.
+  struct State : FrictionalState {};
   State initial_state(const ParticleInit&) const { return {}; }
 
   static constexpr auto state_variables = frictional_state_variables;
