@@ -94,10 +94,10 @@ struct DruckerPrager {
       parameters.expansion.with_mechanical_increment(deps, in, [&] {
         elastic_trial<Kind>(sigma, deps, in.dL, lambda, mu);
         const double p = (sigma[0] + sigma[1] + sigma[2]) / 3.0;
+        const double J = std::sqrt(deviatoric_j2(sigma, p));
+        if (J + cone_.eta * p <= strength && p <= parameters.tension_cutoff) return;
         Voigt s = sigma;
         for (int i = 0; i < 3; ++i) s[i] -= p;
-        const double J = std::sqrt(0.5 * double_contraction(s, s));
-        if (J + cone_.eta * p <= strength && p <= parameters.tension_cutoff) return;
         plastic_return<Kind>(state, sigma, s, p, J);
       });
     }

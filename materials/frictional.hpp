@@ -94,6 +94,12 @@ template <StressState Kind>
   for (int i = 3; i < 6; ++i) sigma[i] += 2.0 * mu * deps[i];
 }
 
+// J2 = s : s / 2 of a stress with mean stress p.
+[[gnu::always_inline]] inline double deviatoric_j2(const Voigt& sigma, double p) {
+  const double a = sigma[0] - p, b = sigma[1] - p, c = sigma[2] - p;
+  return 0.5 * (a * a + b * b + c * c) + sigma[3] * sigma[3] + sigma[4] * sigma[4] + sigma[5] * sigma[5];
+}
+
 // The principal values of a symmetric tensor, largest first, and the
 // coaxial tensor of new principal values. 3D: Eigen's closed-form
 // eigensolver. Plane strain and axisymmetric: zz is principal (xz = yz = 0)

@@ -57,6 +57,11 @@ struct MohrCoulomb {
   Parameters parameters;
   double lambda = 0.0, mu = 0.0, K = 0.0;
   double sin_phi = 0.0, sin_psi = 0.0, strength = 0.0;  // strength = 2 c cos phi
+  // The Drucker-Prager cone inscribed in the pyramid, J + eta p <= xi c
+  // (drucker_prager.hpp): a stress inside it, with p + 2 J / sqrt 3 (the
+  // largest sigma_1 of its p and J) <= T, is inside the surface whatever its
+  // principal values, which the update then need not compute.
+  double inner_eta = 0.0, inner_strength = 0.0;
 
   explicit MohrCoulomb(const Parameters& p)
       : parameters(p),
@@ -65,7 +70,9 @@ struct MohrCoulomb {
         K(lambda + 2.0 * mu / 3.0),
         sin_phi(std::sin(p.friction_angle)),
         sin_psi(std::sin(p.dilation_angle)),
-        strength(2.0 * p.cohesion * std::cos(p.friction_angle)) {}
+        strength(2.0 * p.cohesion * std::cos(p.friction_angle)),
+        inner_eta(3.0 * sin_phi / std::sqrt(9.0 + 3.0 * sin_phi * sin_phi)),
+        inner_strength(3.0 * p.cohesion * std::cos(p.friction_angle) / std::sqrt(9.0 + 3.0 * sin_phi * sin_phi)) {}
 
   // Reads and validates [materials.NAME] (type = "mohr_coulomb").
   static MohrCoulomb read(ParameterTable& table);
@@ -87,6 +94,9 @@ struct MohrCoulomb {
     } else {
       parameters.expansion.with_mechanical_increment(deps, in, [&] {
         elastic_trial<Kind>(sigma, deps, in.dL, lambda, mu);
+        const double p = (sigma[0] + sigma[1] + sigma[2]) / 3.0;
+        const double J = std::sqrt(deviatoric_j2(sigma, p));
+        if (J + inner_eta * p <= inner_strength && p + 2.0 / std::numbers::sqrt3 * J <= parameters.tension_cutoff) return;
         const PrincipalAxes<Kind> axes(sigma);
         if (yield_function(axes.value) <= 0.0 && axes.value[0] <= parameters.tension_cutoff) return;
         const std::array<double, 3> returned = principal_return(axes.value);
