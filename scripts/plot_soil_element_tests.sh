@@ -38,13 +38,13 @@ s = math.sin(math.radians(30.0)); N = (1 + s) / (1 - s)
 print(100 * N + 2 * 10 * math.sqrt(N))")
 
 gnuplot <<EOF
-set terminal pngcairo size 900,500 font ",11"
+set terminal pngcairo size 900,500 font ",11" noenhanced
 set output "$png/soil_biaxial.png"
 set xlabel "mean axial strain -eps_yy (%)"
 set ylabel "mean stress (kPa, compression positive)"
 set title "Plane-strain biaxial compression, sigma_3 = 100 kPa, phi = 30 deg, c = 10 kPa, psi = 10 deg"
 set key center right
-set xrange [0:6.2]
+set xrange [0:3.2]
 set yrange [0:380]
 plot $strength w l lc rgb "black" dt 2 t sprintf("sigma_3 N_phi + 2 c sqrt(N_phi) = %.2f kPa", $strength), \
      "$data/mohr_coulomb.dat" u 1:2 w l lw 2 lc rgb "#1f77b4" t "mohr_coulomb: sigma_1", \
