@@ -299,7 +299,7 @@ TEST_CASE("consistency: along random strain paths the stress never leaves the su
       CHECK(p <= T + tol);
       yielded += mc.state.shear > 0.0;
     }
-    MESSAGE("consistency" << (cutoff.empty() ? "" : " with T = 5 kPa") << ": " << yielded
+    MESSAGE(std::string(cutoff.empty() ? "consistency" : "consistency with T = 5 kPa") << ": " << yielded
                           << " of 2000 random increments after the first yield");
     CHECK(yielded > 1000);
     CHECK(dp.state.shear > 0.0);
