@@ -202,7 +202,7 @@ TEST_CASE("tension cut-off: sigma_1 <= T, and hydrostatic extension ends at the 
 TEST_CASE("Drucker-Prager with the plane-strain fit reaches Mohr-Coulomb's plane-strain strength") {
   // Of the fits' formulas: with psi = phi the plane-strain cone is the
   // inscribed one, eta = 3 tan(phi) / sqrt(9 + 12 tan^2(phi)), xi = 3 /
-  // sqrt(9 + 12 tan^2(phi)) ([de Souza Neto 2008], eq. 6.123).
+  // sqrt(9 + 12 tan^2(phi)) ([de Souza Neto 2008], section 6.4).
   for (double phi : {20.0, 35.0}) {
     const double t = std::tan(phi * degree);
     const DruckerPrager::Cone a = DruckerPrager::cone(DruckerPrager::Fit::plane_strain, phi * degree, phi * degree);
