@@ -2,7 +2,7 @@
 // stress, small strain, isotropic elasticity (materials/frictional.hpp for
 // what it shares with mohr_coulomb). Tension positive; p = tr(sigma) / 3,
 // s the deviator, J = sqrt(J2) = sqrt(s : s / 2).
-//   Yield ([de Souza Neto 2008], section 6.4.2): F = J + eta p - xi c <= 0;
+//   Yield ([de Souza Neto 2008], section 6.4): F = J + eta p - xi c <= 0;
 //   flow potential G = J + eta_bar p (non-associated unless eta_bar = eta);
 //   cut-off: p <= T, associated (n = I / 3), T in [0, xi c / eta].
 // The cone matches Mohr-Coulomb's phi, c and psi by `fit`:
@@ -23,15 +23,15 @@
 //     criterion, for the eta and xi above; then
 //     d eps_p,v / (d eps_p,1 - d eps_p,3) = eta_bar / sqrt(1 - eta_bar^2 / 3)
 //     = sin psi. With psi = phi it is the inscribed cone
-//     ([de Souza Neto 2008], eq. 6.123).
+//     ([de Souza Neto 2008], section 6.4).
 //   Every fit has its apex at xi c / eta = c cot phi, Mohr-Coulomb's.
-// Return ([de Souza Neto 2008], Box 8.9, perfectly plastic), from the
+// Return ([de Souza Neto 2008], chapter 8, perfectly plastic), from the
 // elastic trial (p*, s*, J*):
 //   cone: dgamma = F(p*, J*) / (G + K eta eta_bar), J = J* - G dgamma,
 //         p = p* - K eta_bar dgamma; taken if J >= 0 and p <= T;
 //   cut-off: p = T, s = s*; taken if F(T, J*) <= 0;
 //   otherwise the corner p = T, J = xi c - eta T (with T = c cot phi the
-//   apex, J = 0: Box 8.9's apex return).
+//   apex, J = 0: the cone's apex return).
 // Then sigma = p I + (J / J*) s*.
 #pragma once
 #include <array>

@@ -2,7 +2,7 @@
 // strain, isotropic elasticity (materials/frictional.hpp for what it shares
 // with drucker_prager). Principal stresses sigma_1 >= sigma_2 >= sigma_3,
 // tension positive; s_phi = sin phi, s_psi = sin psi.
-//   Yield ([de Souza Neto 2008], eq. 6.112, in principal stresses):
+//   Yield ([de Souza Neto 2008], section 6.4, in principal stresses):
 //     f_ij = (sigma_i - sigma_j) + (sigma_i + sigma_j) s_phi - 2 c cos phi <= 0,
 //     the main plane f_13, and f_12, f_23, which meet it on the edges
 //     sigma_2 = sigma_3 and sigma_1 = sigma_2, and all three at the apex
