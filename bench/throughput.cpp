@@ -33,6 +33,14 @@
 // program reports per size the rates of the one-body block and of the two
 // bodies in contact, 1 and 2 threads, their ratio, and the peak bytes per
 // particle of each.
+// With --material mohr_coulomb (or drucker_prager) the program reports per
+// size the rates of the elastic block and of the same block of that soil
+// (the same elasticity, phi = 30 degrees, c = 10 kPa, psi = 0; Drucker-
+// Prager's plane-strain fit), 1 and 2 threads, and the soil step's cost
+// over the elastic one's (their rates' inverse ratio). The block's
+// self-weight (10 kPa at its base) stays inside the surface: every particle
+// takes the trial, its principal stresses (Mohr-Coulomb) or invariants
+// and the yield check, the elastic path of a soil at rest.
 // With --axisymmetric the block is a 2D section, 1 m x 1 m, of cells of
 // 2 x 2 particles on a held base under gravity, run in plane strain and
 // axisymmetric (x the radius from the axis): the program reports per size
@@ -42,7 +50,7 @@
 //   build/bench/bench_throughput [--sizes 1e4,1e5,1e6] [--particle-steps N]
 //                                [--repeats R] [--shape linear|gimp|bspline2|bspline3]
 //                                [--transport heat|both] [--contact] [--transfers] [--axisymmetric]
-//                                [--csv FILE]
+//                                [--material mohr_coulomb|drucker_prager] [--csv FILE]
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -51,6 +59,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <numbers>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -322,6 +331,46 @@ void transport_table(const ShapeRunner& runner, const std::vector<double>& sizes
   }
 }
 
+// The bench's soil (header): the elastic constants of bench_elastic.
+Material bench_soil(const std::string& type) {
+  const LinearElastic::Parameters e = bench_elastic();
+  FrictionalParameters p;
+  p.density = e.density;
+  p.youngs_modulus = e.youngs_modulus;
+  p.poisson_ratio = e.poisson_ratio;
+  p.friction_angle = 30.0 * std::numbers::pi / 180.0;
+  p.cohesion = 10e3;
+  p.tension_cutoff = p.apex();
+  if (type == "mohr_coulomb") return MohrCoulomb(p);
+  DruckerPrager::Parameters d;
+  static_cast<FrictionalParameters&>(d) = p;
+  return DruckerPrager(d);
+}
+
+// The material table: per size, the median rates of the elastic block and
+// of the soil block, 1 and 2 threads, and the soil step's relative cost.
+void material_table(const ShapeRunner& runner, const std::vector<double>& sizes, double particle_steps, int repeats,
+                    const std::string& shape, const std::string& material, std::ofstream& csv) {
+  std::printf("3D block on a fixed base under gravity, USL, %s shape functions: linear_elastic and %s"
+              " (phi = 30 deg, c = 10 kPa, inside the surface); medians of %d runs\n", shape.c_str(), material.c_str(),
+              repeats);
+  std::printf("%10s %6s %10s %10s %10s %10s %8s %8s\n", "particles", "steps", "elast 1t", "soil 1t", "elast 2t",
+              "soil 2t", "cost 1t", "cost 2t");
+  std::printf("%10s %6s %10s %10s %10s %10s\n", "", "", "Mp-st/s", "Mp-st/s", "Mp-st/s", "Mp-st/s");
+  if (csv) csv << "particles,steps,rate_elastic_1t,rate_soil_1t,rate_elastic_2t,rate_soil_2t\n";
+  for (double size : sizes) {
+    const SystemSpec elastic = block_case(static_cast<std::size_t>(size), shape);
+    SystemSpec soil = elastic;
+    soil.materials[0] = {material, bench_soil(material)};
+    const int steps = std::max(5, static_cast<int>(particle_steps / size));
+    const PairRates r = pair_rates(runner.time_steps, elastic, soil, steps, repeats);
+    std::printf("%10zu %6d %10.2f %10.2f %10.2f %10.2f %8.3f %8.3f\n", r.particles, steps, r.a1 / 1e6, r.b1 / 1e6,
+                r.a2 / 1e6, r.b2 / 1e6, r.a1 / r.b1, r.a2 / r.b2);
+    std::fflush(stdout);
+    if (csv) csv << r.particles << "," << steps << "," << r.a1 << "," << r.b1 << "," << r.a2 << "," << r.b2 << "\n";
+  }
+}
+
 // The contact table: per size, the median rates of the one-body block and
 // of the two half-blocks in contact, 1 and 2 threads, their ratios, and
 // the peak resident bytes per particle of each.
@@ -470,7 +519,7 @@ int main(int argc, char** argv) {
   std::vector<double> sizes{1e4, 1e5, 1e6};
   double particle_steps = 3e7;  // per measurement, so that each lasts ~1 s or more
   int repeats = 3;
-  std::string csv_path, shape = "linear", transport;
+  std::string csv_path, shape = "linear", transport, material;
   bool contact = false, transfers = false, axisymmetric = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -489,6 +538,13 @@ int main(int argc, char** argv) {
     else if (a == "--contact") contact = true;
     else if (a == "--transfers") transfers = true;
     else if (a == "--axisymmetric") axisymmetric = true;
+    else if (a == "--material") {
+      material = next();
+      if (material != "mohr_coulomb" && material != "drucker_prager") {
+        std::cerr << "--material: expected \"mohr_coulomb\" or \"drucker_prager\", got '" << material << "'\n";
+        return 1;
+      }
+    }
     else if (a == "--transport") {
       transport = next();
       if (transport != "heat" && transport != "both") {
@@ -498,7 +554,8 @@ int main(int argc, char** argv) {
     }
     else {
       std::cerr << "usage: bench_throughput [--sizes 1e4,1e5,1e6] [--particle-steps 3e7] [--repeats 3] [--shape linear] "
-                   "[--transport heat|both] [--contact] [--transfers] [--axisymmetric] [--csv FILE]\n";
+                   "[--transport heat|both] [--contact] [--transfers] [--axisymmetric] [--material mohr_coulomb|drucker_prager] "
+                   "[--csv FILE]\n";
       return a == "--help" ? 0 : 1;
     }
   }
@@ -508,6 +565,12 @@ int main(int argc, char** argv) {
     std::ofstream csv;
     if (!csv_path.empty()) csv.open(csv_path);
     contact_table(runner, sizes, particle_steps, repeats, shape, csv);
+    return 0;
+  }
+  if (!material.empty()) {
+    std::ofstream csv;
+    if (!csv_path.empty()) csv.open(csv_path);
+    material_table(runner, sizes, particle_steps, repeats, shape, material, csv);
     return 0;
   }
   if (axisymmetric) {

@@ -71,6 +71,18 @@ struct Expansion {
     return strain_for(dT, dc)[0];
   }
 
+  // Calls update() with deps the mechanical increment d eps - th I of an
+  // isotropic rate-form model, th = isotropic_step (the expansion takes no
+  // stress), and restores the total increment after it.
+  template <class Update>
+  [[gnu::always_inline]] void with_mechanical_increment(Voigt& deps, const MaterialInput& in, Update&& update) const {
+    if (!any()) return update();
+    const double th = isotropic_step(in);
+    for (int i = 0; i < 3; ++i) deps[i] -= th;
+    update();
+    for (int i = 0; i < 3; ++i) deps[i] += th;
+  }
+
   // The work done per unit volume by the isotropic expansion over the
   // increment against the stress sigma (J/m^3): -tr(sigma) th.
   double isotropic_work(const Voigt& sigma, const MaterialInput& in) const {

@@ -21,6 +21,9 @@
 //                                                    // J/m^3 done on the body: -sigma : d eps_expansion
 //                                                    // for the energy balance (engine/energy_balance.hpp);
 //   bool expands() const;                            // false: the engine skips expansion_work
+//   static constexpr bool supports(StressState);     // false for a stress state it has no update for
+//                                                    // (its update is then never called): the case
+//                                                    // reader refuses its material there
 //   Eigen::Quaterniond material_axes(const State&) const;  // models with material axes: R, material
 //                                                    // to global; the conductivity and diffusivity turn with it
 // `update` is pure apart from its outputs: stress, state, and for reduced
@@ -39,7 +42,9 @@
 #include <vector>
 
 #include "core/registry.hpp"
+#include "materials/drucker_prager.hpp"
 #include "materials/linear_elastic.hpp"
+#include "materials/mohr_coulomb.hpp"
 #include "materials/neo_hookean.hpp"
 #include "materials/nonlocal_model.hpp"
 #include "materials/orthotropic.hpp"
@@ -49,7 +54,8 @@
 
 namespace flowmpm {
 
-using Material = std::variant<LinearElastic, Orthotropic, TransverselyIsotropic, VonMises, StrainSoftening, NeoHookean>;
+using Material = std::variant<LinearElastic, Orthotropic, TransverselyIsotropic, VonMises, StrainSoftening, NeoHookean,
+                              MohrCoulomb, DruckerPrager>;
 using Materials = Registry<Material>;
 
 // The internal variables of every particle of a batch, one array per model.
@@ -78,6 +84,20 @@ inline double nonlocal_length(const Material& m) {
           return model.nonlocal_length();
         } else {
           return 0.0;
+        }
+      },
+      m);
+}
+// Whether the model has an update for the stress state (supports above;
+// true for a model that does not declare it).
+inline bool supports(const Material& m, StressState kind) {
+  return std::visit(
+      [&](const auto& model) {
+        using M = std::decay_t<decltype(model)>;
+        if constexpr (requires { M::supports(kind); }) {
+          return M::supports(kind);
+        } else {
+          return true;
         }
       },
       m);

@@ -150,22 +150,12 @@ struct VonMises {
 
   template <StressState Kind>
   void update(State& state, Voigt& sigma, Voigt& deps, const MaterialInput& in) const {
-    if (!parameters.expansion.any()) return mechanical_update<Kind>(state, sigma, deps, in);
-    // The return sees the mechanical increment d eps - th I; the total is restored after.
-    const double th = parameters.expansion.isotropic_step(in);
-    for (int i = 0; i < 3; ++i) deps[i] -= th;
-    mechanical_update<Kind>(state, sigma, deps, in);
-    for (int i = 0; i < 3; ++i) deps[i] += th;
+    parameters.expansion.with_mechanical_increment(deps, in, [&] { mechanical_update<Kind>(state, sigma, deps, in); });
   }
 
-  // Elastic strain energy per unit volume, sigma : C^-1 : sigma / 2 =
-  // p^2 / (2 K) + s : s / (4 G) (any stress state: the stress holds the
-  // elastic strain; the plastic work is dissipated).
+  // Elastic strain energy per unit volume (lame.hpp; the plastic work is dissipated).
   double stored_energy(const State&, const Voigt& sigma, const Voigt&) const {
-    const double p = (sigma[0] + sigma[1] + sigma[2]) / 3.0;
-    Voigt s = sigma;
-    for (int i = 0; i < 3; ++i) s[i] -= p;
-    return p * p / (2.0 * K) + double_contraction(s, s) / (4.0 * mu);
+    return isotropic_stored_energy(sigma, K, mu);
   }
 
   // Work done on the body by the isotropic expansion over one increment per

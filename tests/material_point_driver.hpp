@@ -61,9 +61,9 @@ struct MaterialPoint {
   void strain(const Voigt& deps, double dt = 1.0) { step(tensor_of(deps), dt); }
 
   // A strain increment whose components `free` are chosen so that their
-  // stresses are zero at the end of it (|sigma_free| <= 1e-13 of the largest
-  // stress component).
-  void mixed(Voigt deps, const std::vector<int>& free, double dt = 1.0) {
+  // stresses are `target`'s (zero unless given) at the end of it
+  // (|sigma_free - target_free| <= 1e-13 of the largest stress component).
+  void mixed(Voigt deps, const std::vector<int>& free, double dt = 1.0, const Voigt& target = {}) {
     const int n = static_cast<int>(free.size());
     Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
     double scale = 0.0;
@@ -76,7 +76,7 @@ struct MaterialPoint {
       Voigt sig = sigma;
       apply(s, sig, d, tensor_of(d), t + dt);
       Eigen::VectorXd r(n);
-      for (int k = 0; k < n; ++k) r[k] = sig[free[k]];
+      for (int k = 0; k < n; ++k) r[k] = sig[free[k]] - target[free[k]];
       if (sig_out) *sig_out = sig;
       return r;
     };

@@ -2,8 +2,9 @@
 // restarts from a checkpoint at step K writes, from K on, the same results
 // as a run that was never stopped, to the last bit. Checked with the
 // program itself (run, --restart, SIGINT, sweeps) on cases with every kind
-// of carried state: von_mises plastic strain, strain_softening damage and
-// dissipated energy, orthotropic material axes, every shape function,
+// of carried state: von_mises plastic strain, mohr_coulomb plastic strains,
+// strain_softening damage and dissipated energy, orthotropic material axes,
+// every shape function,
 // particle re-sorts (the memory order changes), dt = "auto" (dt and t carry),
 // a reference's error sums, constraint reactions and the blow-up guard's last
 // good state. The step files are compared dataset by dataset, byte for
@@ -379,6 +380,15 @@ TEST_CASE("von_mises plate with loaded node sets: reactions and plastic strain c
   TempDir dir("flowmpm_restart");
   check_restart_matches(dir, config_file("materials/von_mises_plate.toml"), 2600,
                         {"output.every=250", "output.fields=[\"position\",\"stress\",\"plastic_strain\"]"});
+}
+
+TEST_CASE("mohr_coulomb biaxial block: the plastic shear and volumetric strains and the dissipated energy carry") {
+  // Checkpointed at step 1500 of 2400, on the plateau where every particle flows.
+  TempDir dir("flowmpm_restart");
+  check_restart_matches(dir, config_file("materials/mohr_coulomb_biaxial.toml"), 1500,
+                        {"output.every=200",
+                         "output.fields=[\"position\",\"stress\",\"plastic_shear_strain\","
+                         "\"plastic_volumetric_strain\",\"dissipated_energy\"]"});
 }
 
 TEST_CASE("transport: temperature, concentration, their pending expansion and the energy balance carry") {

@@ -55,6 +55,20 @@ void read_materials(TableReader& root, const toml::table& document, SystemSpec& 
     material_tables.push_back(std::move(m));
   }
   if (c.materials.empty()) materials.fail_table("define at least one material, e.g. [materials.steel]");
+  // A model without an update for the analysis's stress state.
+  const StressState state = c.dimension == 1   ? StressState::uniaxial_stress
+                            : c.dimension == 3 ? StressState::three_d
+                            : c.plane_stress   ? StressState::plane_stress
+                            : c.axisymmetric   ? StressState::axisymmetric
+                                               : StressState::plane_strain;
+  for (std::size_t i = 0; i < c.materials.size(); ++i) {
+    if (!supports(c.materials[i].model, state)) {
+      material_tables[i].fail("type", std::string("a model with a return in ") + stress_state_name(state) +
+                                          ": \"" + type_name(c.materials[i].model) +
+                                          "\" has none (3D, plane strain and axisymmetric only; "
+                                          "set analysis.stress_state = \"plane_strain\" or use dimension = 3)");
+    }
+  }
   check_transport(material_tables, c);
 }
 

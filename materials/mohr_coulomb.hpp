@@ -1,0 +1,125 @@
+// Mohr-Coulomb perfect plasticity with a Rankine tension cut-off, small
+// strain, isotropic elasticity (materials/frictional.hpp for what it shares
+// with drucker_prager). Principal stresses sigma_1 >= sigma_2 >= sigma_3,
+// tension positive; s_phi = sin phi, s_psi = sin psi.
+//   Yield ([de Souza Neto 2008], section 6.4, in principal stresses):
+//     f_ij = (sigma_i - sigma_j) + (sigma_i + sigma_j) s_phi - 2 c cos phi <= 0,
+//     the main plane f_13, and f_12, f_23, which meet it on the edges
+//     sigma_2 = sigma_3 and sigma_1 = sigma_2, and all three at the apex
+//     sigma_i = c cot phi.
+//   Flow potential: g_ij, the same with psi for phi; its gradient
+//     n_ij = (1 + s_psi) e_i - (1 - s_psi) e_j, so that on the main plane
+//     d eps_p,v / (d eps_p,1 - d eps_p,3) = s_psi (the dilatancy of psi).
+//   Tension cut-off (Rankine, on the major principal stress): r_i =
+//     sigma_i - T <= 0, associated (n = e_i). MC alone implies sigma_1 <= c
+//     cot phi, so T = c cot phi (the default) leaves the surface unchanged
+//     and T = 0 is a soil that bears no tension in any direction.
+// Return ([de Souza Neto 2008], Boxes 8.4-8.5, extended to the cut-off as a
+// multisurface return, [Clausen 2007]): the elastic trial sigma* is split
+// into principal values (frictional.hpp, PrincipalAxes); every surface and
+// potential is linear in them and the material perfectly plastic, so the
+// return to a set A of active surfaces is the linear system
+//   sum_{j in A} (a_i . D n_j) dgamma_j = f_i(sigma*),  i in A,
+//   sigma = sigma* - sum_j dgamma_j D n_j,  D n = lambda tr(n) 1 + 2 G n,
+// (a_i the gradient of f_i). The candidate sets are tried in the order of
+// Box 8.5 (main plane, the two edges), then the cut-off (its plane, its
+// edge sigma_1 = sigma_2 = T, the main plane with it, on the edge
+// sigma_2 = sigma_3 with it, on the edge sigma_1 = sigma_2 = T with it),
+// and the first with every dgamma >= 0 whose stress keeps the ordering,
+// f_13 <= 0 and sigma_1 <= T (which imply the other surfaces) is taken;
+// none: the apex of the cut surface, sigma_i = T (with T = c cot phi the
+// apex of Box 8.5). Associated flow (psi = phi) makes this the closest point
+// in the energy norm; the stress then rebuilds from the principal axes of
+// the trial (an isotropic return is coaxial).
+#pragma once
+#include <array>
+#include <cmath>
+
+#include "core/voigt.hpp"
+#include "materials/frictional.hpp"
+
+namespace flowmpm {
+
+class ParameterTable;
+
+struct MohrCoulomb {
+  static constexpr const char* type_name = "mohr_coulomb";
+
+  using Parameters = FrictionalParameters;
+  // Its own type (the engine keeps one state array per model): frictional.hpp.
+  struct State : FrictionalState {};
+  State initial_state(const ParticleInit&) const { return {}; }
+
+  static constexpr auto state_variables = frictional_state_variables;
+  void state_values(const State& s, double* out) const { frictional_state_values(s, out); }
+  static constexpr bool supports(StressState kind) { return frictional_supports(kind); }
+
+  Parameters parameters;
+  double lambda = 0.0, mu = 0.0, K = 0.0;
+  double sin_phi = 0.0, sin_psi = 0.0, strength = 0.0;  // strength = 2 c cos phi
+  // The Drucker-Prager cone inscribed in the pyramid, J + eta p <= xi c
+  // (drucker_prager.hpp): a stress inside it, with p + 2 J / sqrt 3 (the
+  // largest sigma_1 of its p and J) <= T, is inside the surface whatever its
+  // principal values, which the update then need not compute.
+  double inner_eta = 0.0, inner_strength = 0.0;
+
+  explicit MohrCoulomb(const Parameters& p)
+      : parameters(p),
+        lambda(lame_lambda(p.youngs_modulus, p.poisson_ratio)),
+        mu(lame_mu(p.youngs_modulus, p.poisson_ratio)),
+        K(lambda + 2.0 * mu / 3.0),
+        sin_phi(std::sin(p.friction_angle)),
+        sin_psi(std::sin(p.dilation_angle)),
+        strength(2.0 * p.cohesion * std::cos(p.friction_angle)),
+        inner_eta(3.0 * sin_phi / std::sqrt(9.0 + 3.0 * sin_phi * sin_phi)),
+        inner_strength(3.0 * p.cohesion * std::cos(p.friction_angle) / std::sqrt(9.0 + 3.0 * sin_phi * sin_phi)) {}
+
+  // Reads and validates [materials.NAME] (type = "mohr_coulomb").
+  static MohrCoulomb read(ParameterTable& table);
+
+  double density() const { return parameters.density; }
+  const TransportProperties& transport() const { return parameters.transport; }
+  // P wave of the elastic material, sqrt((lambda + 2 mu) / rho) (m/s).
+  double wave_speed() const { return std::sqrt((lambda + 2.0 * mu) / parameters.density); }
+
+  // The main plane f_13 of the principal stresses (descending).
+  double yield_function(const std::array<double, 3>& s) const {
+    return (s[0] - s[2]) + (s[0] + s[2]) * sin_phi - strength;
+  }
+
+  template <StressState Kind>
+  void update(State& state, Voigt& sigma, Voigt& deps, const MaterialInput& in) const {
+    if constexpr (!supports(Kind)) {
+      unsupported(Kind);
+    } else {
+      parameters.expansion.with_mechanical_increment(deps, in, [&] {
+        elastic_trial<Kind>(sigma, deps, in.dL, lambda, mu);
+        const double p = (sigma[0] + sigma[1] + sigma[2]) / 3.0;
+        const double J = std::sqrt(deviatoric_j2(sigma, p));
+        if (J + inner_eta * p <= inner_strength && p + 2.0 / std::numbers::sqrt3 * J <= parameters.tension_cutoff) return;
+        const PrincipalAxes<Kind> axes(sigma);
+        if (yield_function(axes.value) <= 0.0 && axes.value[0] <= parameters.tension_cutoff) return;
+        const std::array<double, 3> returned = principal_return(axes.value);
+        axes.rebuild(sigma, returned);
+        record_plastic_strain(state, axes.value, returned, parameters.youngs_modulus, parameters.poisson_ratio);
+      });
+    }
+  }
+
+  // The returned principal stresses of a trial outside the surface (header).
+  std::array<double, 3> principal_return(const std::array<double, 3>& trial) const;
+
+  // Thrown if the engine ever updates a stress state the reader refused.
+  [[noreturn]] static void unsupported(StressState kind);
+
+  double stored_energy(const State&, const Voigt& sigma, const Voigt&) const {
+    return isotropic_stored_energy(sigma, K, mu);
+  }
+  double dissipated_energy(const State& state) const { return state.dissipated; }
+  double expansion_work(const State&, const Voigt& sigma, const MaterialInput& in) const {
+    return parameters.expansion.isotropic_work(sigma, in);
+  }
+  bool expands() const { return parameters.expansion.any(); }
+};
+
+}  // namespace flowmpm
