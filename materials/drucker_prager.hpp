@@ -44,20 +44,20 @@ namespace flowmpm {
 
 class ParameterTable;
 
-struct DruckerPrager {
+enum class DruckerPragerFit { plane_strain, compression, extension, inscribed };
+struct DruckerPragerParameters : FrictionalParameters {
+  DruckerPragerFit fit = DruckerPragerFit::plane_strain;
+};
+
+struct DruckerPrager : FrictionalModel<DruckerPragerParameters> {
   static constexpr const char* type_name = "drucker_prager";
 
-  enum class Fit { plane_strain, compression, extension, inscribed };
-  struct Parameters : FrictionalParameters {
-    Fit fit = Fit::plane_strain;
-  };
+  using Fit = DruckerPragerFit;
+  using Parameters = DruckerPragerParameters;
   // Its own type (the engine keeps one state array per model): frictional.hpp.
   struct State : FrictionalState {};
   State initial_state(const ParticleInit&) const { return {}; }
 
-  static constexpr auto state_variables = frictional_state_variables;
-  void state_values(const State& s, double* out) const { frictional_state_values(s, out); }
-  static constexpr bool supports(StressState kind) { return frictional_supports(kind); }
 
   // eta, xi and eta_bar of a fit (header).
   struct Cone {
@@ -65,26 +65,17 @@ struct DruckerPrager {
   };
   static Cone cone(Fit fit, double phi, double psi);
 
-  Parameters parameters;
-  double lambda = 0.0, mu = 0.0, K = 0.0;
   Cone cone_ = {};
   double strength = 0.0;  // xi c (Pa)
 
   explicit DruckerPrager(const Parameters& p)
-      : parameters(p),
-        lambda(lame_lambda(p.youngs_modulus, p.poisson_ratio)),
-        mu(lame_mu(p.youngs_modulus, p.poisson_ratio)),
-        K(lambda + 2.0 * mu / 3.0),
+      : FrictionalModel(p),
         cone_(cone(p.fit, p.friction_angle, p.dilation_angle)),
         strength(cone_.xi * p.cohesion) {}
 
   // Reads and validates [materials.NAME] (type = "drucker_prager").
   static DruckerPrager read(ParameterTable& table);
 
-  double density() const { return parameters.density; }
-  const TransportProperties& transport() const { return parameters.transport; }
-  // P wave of the elastic material, sqrt((lambda + 2 mu) / rho) (m/s).
-  double wave_speed() const { return std::sqrt((lambda + 2.0 * mu) / parameters.density); }
 
   template <StressState Kind>
   void update(State& state, Voigt& sigma, Voigt& deps, const MaterialInput& in) const {
@@ -106,14 +97,6 @@ struct DruckerPrager {
   // Thrown if the engine ever updates a stress state the reader refused.
   [[noreturn]] static void unsupported(StressState kind);
 
-  double stored_energy(const State&, const Voigt& sigma, const Voigt&) const {
-    return isotropic_stored_energy(sigma, K, mu);
-  }
-  double dissipated_energy(const State& state) const { return state.dissipated; }
-  double expansion_work(const State&, const Voigt& sigma, const MaterialInput& in) const {
-    return parameters.expansion.isotropic_work(sigma, in);
-  }
-  bool expands() const { return parameters.expansion.any(); }
 
  private:
   // The return (header) of the trial sigma = p* I + s*, J* = J.

@@ -83,6 +83,40 @@ constexpr bool frictional_supports(StressState kind) {
   return kind != StressState::plane_stress && kind != StressState::uniaxial_stress;
 }
 
+// What both models are besides their yield surface and return: the
+// parameters (P: FrictionalParameters or one derived from it), the elastic
+// constants and the members the engine asks of every model
+// (materials/material.hpp) that do not depend on the surface.
+template <class P>
+struct FrictionalModel {
+  P parameters;
+  double lambda = 0.0, mu = 0.0, K = 0.0;
+
+  explicit FrictionalModel(const P& p)
+      : parameters(p),
+        lambda(lame_lambda(p.youngs_modulus, p.poisson_ratio)),
+        mu(lame_mu(p.youngs_modulus, p.poisson_ratio)),
+        K(lambda + 2.0 * mu / 3.0) {}
+
+  static constexpr auto state_variables = frictional_state_variables;
+  void state_values(const FrictionalState& s, double* out) const { frictional_state_values(s, out); }
+  static constexpr bool supports(StressState kind) { return frictional_supports(kind); }
+
+  double density() const { return parameters.density; }
+  const TransportProperties& transport() const { return parameters.transport; }
+  // P wave of the elastic material, sqrt((lambda + 2 mu) / rho) (m/s).
+  double wave_speed() const { return std::sqrt((lambda + 2.0 * mu) / parameters.density); }
+
+  double stored_energy(const FrictionalState&, const Voigt& sigma, const Voigt&) const {
+    return isotropic_stored_energy(sigma, K, mu);
+  }
+  double dissipated_energy(const FrictionalState& state) const { return state.dissipated; }
+  double expansion_work(const FrictionalState&, const Voigt& sigma, const MaterialInput& in) const {
+    return parameters.expansion.isotropic_work(sigma, in);
+  }
+  bool expands() const { return parameters.expansion.any(); }
+};
+
 // The elastic trial of a step: the stress turned with the spin of dL, plus
 // C d eps (every component of d eps known: 3D, plane strain, axisymmetric).
 template <StressState Kind>

@@ -42,7 +42,7 @@ namespace flowmpm {
 
 class ParameterTable;
 
-struct MohrCoulomb {
+struct MohrCoulomb : FrictionalModel<FrictionalParameters> {
   static constexpr const char* type_name = "mohr_coulomb";
 
   using Parameters = FrictionalParameters;
@@ -50,12 +50,7 @@ struct MohrCoulomb {
   struct State : FrictionalState {};
   State initial_state(const ParticleInit&) const { return {}; }
 
-  static constexpr auto state_variables = frictional_state_variables;
-  void state_values(const State& s, double* out) const { frictional_state_values(s, out); }
-  static constexpr bool supports(StressState kind) { return frictional_supports(kind); }
 
-  Parameters parameters;
-  double lambda = 0.0, mu = 0.0, K = 0.0;
   double sin_phi = 0.0, sin_psi = 0.0, strength = 0.0;  // strength = 2 c cos phi
   // The Drucker-Prager cone inscribed in the pyramid, J + eta p <= xi c
   // (drucker_prager.hpp): a stress inside it, with p + 2 J / sqrt 3 (the
@@ -64,10 +59,7 @@ struct MohrCoulomb {
   double inner_eta = 0.0, inner_strength = 0.0;
 
   explicit MohrCoulomb(const Parameters& p)
-      : parameters(p),
-        lambda(lame_lambda(p.youngs_modulus, p.poisson_ratio)),
-        mu(lame_mu(p.youngs_modulus, p.poisson_ratio)),
-        K(lambda + 2.0 * mu / 3.0),
+      : FrictionalModel(p),
         sin_phi(std::sin(p.friction_angle)),
         sin_psi(std::sin(p.dilation_angle)),
         strength(2.0 * p.cohesion * std::cos(p.friction_angle)),
@@ -77,10 +69,6 @@ struct MohrCoulomb {
   // Reads and validates [materials.NAME] (type = "mohr_coulomb").
   static MohrCoulomb read(ParameterTable& table);
 
-  double density() const { return parameters.density; }
-  const TransportProperties& transport() const { return parameters.transport; }
-  // P wave of the elastic material, sqrt((lambda + 2 mu) / rho) (m/s).
-  double wave_speed() const { return std::sqrt((lambda + 2.0 * mu) / parameters.density); }
 
   // The main plane f_13 of the principal stresses (descending).
   double yield_function(const std::array<double, 3>& s) const {
@@ -112,14 +100,6 @@ struct MohrCoulomb {
   // Thrown if the engine ever updates a stress state the reader refused.
   [[noreturn]] static void unsupported(StressState kind);
 
-  double stored_energy(const State&, const Voigt& sigma, const Voigt&) const {
-    return isotropic_stored_energy(sigma, K, mu);
-  }
-  double dissipated_energy(const State& state) const { return state.dissipated; }
-  double expansion_work(const State&, const Voigt& sigma, const MaterialInput& in) const {
-    return parameters.expansion.isotropic_work(sigma, in);
-  }
-  bool expands() const { return parameters.expansion.any(); }
 };
 
 }  // namespace flowmpm

@@ -53,9 +53,6 @@ void contact_bonds(DiscreteSystem<D, Shape>& system) {
   const auto& grid = system.grid;
   ContactFields<D>& contact = *system.contact;
   const std::size_t pairs = contact.pairs.size();
-  // The fit extrapolates only along directions its particles spread over
-  // by a tenth of a cell (a variance of (h_min / 10)^2).
-  const double floor = 0.01 * grid.h.minCoeff() * grid.h.minCoeff();
   const int first = grid.active_lo[D - 1], last = grid.active_hi[D - 1];
   std::vector<detail::BondSums<D>> slab_sums(static_cast<std::size_t>(last - first + 1), detail::BondSums<D>(pairs));
   tbb::parallel_for(tbb::blocked_range<int>(first, last + 1), [&](const tbb::blocked_range<int>& slabs) {
@@ -79,7 +76,10 @@ void contact_bonds(DiscreteSystem<D, Shape>& system) {
           Vec<D> node;
           for (int d = 0; d < D; ++d) node[d] = ijk[d] * grid.h[d];
           const auto at_node = [&](int k) {
-            return contact.displacement[k - 1].at_node(n, contact.volume[k - 1][n], node, floor);
+            // The fit extrapolates only along directions its particles
+            // spread over by a tenth of a cell (ContactFields::spread_floor).
+            return contact.displacement[k - 1].at_node(n, contact.volume[k - 1][n], contact.spread[k - 1], node,
+                                                       contact.spread_floor);
           };
           const Vec<D> jump = at_node(b) - at_node(a);
           const Vec<D> force = area * law->traction(jump, normal);

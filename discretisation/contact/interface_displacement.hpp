@@ -15,9 +15,10 @@
 // exact for any linear displacement field. Directions in which the
 // particles do not spread (a single row, slivers of weight: variance
 // below `floor`) take the mean, unextrapolated.
-// The sums are sum_p w_p q_p of the particle terms q = (x, x x^T (upper
-// triangle), u, x u^T), x relative to the grid's origin; sum_p w_p is the
-// field's nodal volume (ContactFields::volume).
+// The sums are sum_p w_p q_p of the particle terms q = (u, x u^T), x
+// relative to the grid's origin; sum_p w_p, sum_p w_p x and sum_p w_p x x^T
+// are the field's nodal volume (ContactFields::volume) and its particle
+// spread (particle_spread.hpp), which the normals use too.
 #pragma once
 #include <array>
 #include <vector>
@@ -29,8 +30,7 @@ namespace flowmpm {
 
 template <int D>
 struct InterfaceDisplacement {
-  static constexpr int pairs = D * (D + 1) / 2;
-  static constexpr int terms = D + pairs + D + D * D;
+  static constexpr int terms = D + D * D;
   // sum_p w_p q_p per term and node; empty for a field no interface bonds.
   std::array<std::vector<double>, terms> sum;
 
@@ -43,9 +43,6 @@ struct InterfaceDisplacement {
   static std::array<double, terms> particle_terms(const Vec<D>& x, const Vec<D>& u) {
     std::array<double, terms> q;
     int t = 0;
-    for (int i = 0; i < D; ++i) q[t++] = x[i];
-    for (int i = 0; i < D; ++i)
-      for (int j = i; j < D; ++j) q[t++] = x[i] * x[j];
     for (int i = 0; i < D; ++i) q[t++] = u[i];
     for (int i = 0; i < D; ++i)
       for (int j = 0; j < D; ++j) q[t++] = x[i] * u[j];
@@ -53,15 +50,15 @@ struct InterfaceDisplacement {
   }
 
   // c at node n (position `node` from the grid's origin), the field's
-  // nodal volume there `volume` > 0.
-  Vec<D> at_node(std::size_t n, double volume, const Vec<D>& node, double floor) const {
+  // nodal volume there `volume` > 0 and its particle spread `spread`.
+  Vec<D> at_node(std::size_t n, double volume, const ParticleSpread<D>& spread, const Vec<D>& node,
+                 double floor) const {
     using Matrix = Eigen::Matrix<double, D, D>;
-    Vec<D> x_bar, u_bar;
-    Matrix C, K;
+    const Vec<D> x_bar = spread.mean(n, volume);
+    const Matrix C = spread.covariance(n, volume, x_bar);
+    Vec<D> u_bar;
+    Matrix K;
     int t = 0;
-    for (int i = 0; i < D; ++i) x_bar[i] = sum[t++][n] / volume;
-    for (int i = 0; i < D; ++i)
-      for (int j = i; j < D; ++j) C(i, j) = C(j, i) = sum[t++][n] / volume - x_bar[i] * x_bar[j];
     for (int i = 0; i < D; ++i) u_bar[i] = sum[t++][n] / volume;
     for (int i = 0; i < D; ++i)
       for (int j = 0; j < D; ++j) K(i, j) = sum[t++][n] / volume - x_bar[i] * u_bar[j];

@@ -48,6 +48,21 @@ struct ParticleSpread {
     for (auto& s : sum) s.assign(nodes, 0.0);
   }
 
+  // The weighted mean position and position covariance at node n, from
+  // the sums over w_p, the field's nodal volume `volume` > 0 there.
+  Vec<D> mean(std::size_t n, double volume) const {
+    Vec<D> x;
+    for (int i = 0; i < D; ++i) x[i] = sum[i][n] / volume;
+    return x;
+  }
+  Eigen::Matrix<double, D, D> covariance(std::size_t n, double volume, const Vec<D>& mean) const {
+    Eigen::Matrix<double, D, D> C;
+    int t = D;
+    for (int i = 0; i < D; ++i)
+      for (int j = i; j < D; ++j, ++t) C(i, j) = C(j, i) = sum[t][n] / volume - mean[i] * mean[j];
+    return C;
+  }
+
   // q_p for the position x (from the grid's origin).
   static std::array<double, terms> particle_terms(const Vec<D>& x) {
     std::array<double, terms> q;
@@ -66,16 +81,13 @@ struct ParticleSpread {
 template <int D>
 bool separating_normal(const ParticleSpread<D>& a, double volume_a, const ParticleSpread<D>& b, double volume_b,
                        std::size_t n, double floor, Vec<D>& normal) {
-  using Matrix = Eigen::Matrix<double, D, D>;
   const double volume = volume_a + volume_b;
-  Vec<D> mean_a, mean_b, mean;
-  Matrix C;
-  int t = 0;
-  for (int i = 0; i < D; ++i, ++t) {
-    mean_a[i] = a.sum[t][n] / volume_a;
-    mean_b[i] = b.sum[t][n] / volume_b;
-    mean[i] = (a.sum[t][n] + b.sum[t][n]) / volume;
-  }
+  const Vec<D> mean_a = a.mean(n, volume_a), mean_b = b.mean(n, volume_b);
+  Vec<D> mean;
+  for (int i = 0; i < D; ++i) mean[i] = (a.sum[i][n] + b.sum[i][n]) / volume;
+  // The covariance of both bodies' particles together.
+  Eigen::Matrix<double, D, D> C;
+  int t = D;
   for (int i = 0; i < D; ++i)
     for (int j = i; j < D; ++j, ++t) C(i, j) = C(j, i) = (a.sum[t][n] + b.sum[t][n]) / volume - mean[i] * mean[j];
   const Vec<D> g = inverse_over_spread<D>(C, Vec<D>(mean_b - mean_a), floor);
