@@ -79,7 +79,7 @@ set output "$png/soil_slope.png"
 set xlabel "displacement along the slope after 0.5 s (mm)"
 set ylabel "height above the base (m)"
 set title "Infinite slope, phi = 30 deg, H = 0.5 m: the middle half of the layer's particles"
-set key bottom right
+set key top center
 set autoscale
 set logscale x
 set xrange [1e-4:1000]

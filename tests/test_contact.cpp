@@ -188,6 +188,37 @@ TEST_CASE("incline: on a coarse grid the block slides within 5 % and sticks, whe
   }
 }
 
+// The block on the deformable slab with the slab's surface 1/2 and 3/4 of a
+// cell above a node plane (the slab (2 + offset) cells thick, so that its
+// held base stays on a node plane). Where the block had more volume at
+// its corner nodes than the slab, its corner's gradient, tilted by up to
+// 45 degrees into the slide, was the normal, and the block stuck: 0.005
+// and 0.001 m at 20 mm cells, 0.003 and 0.001 m at 10 mm. Of two deformable
+// bodies the gradient nearer the particles' separating direction is now
+// taken (ContactFields::outward_normal). At 3/4 it slides within 1 %
+// (the 5 % bound); at 1/2 it is still 30 % (20 mm) and 14 % (10 mm)
+// short, so that bound is 40 %, the stuck block's guard, not the issue's
+// 5 % (docs/validation/contact.md).
+TEST_CASE("incline: on a deformable slab on a coarse grid the block slides with the surface mid-cell and at 3/4") {
+  const std::string file = "contact/incline_block_slab.toml";
+  for (const double h : {0.02, 0.01}) {
+    for (const double offset : {0.5, 0.75}) {
+      CAPTURE(h);
+      CAPTURE(offset);
+      const std::string t = std::to_string((2.0 + offset) * h);
+      const std::vector<std::string> o = {"grid.cell_size=" + std::to_string(h),
+                                          h == 0.02 ? "grid.cells=[154, 10]" : "grid.cells=[300, 22]",
+                                          "grid.origin=[-0.02, " + std::to_string(-(0.04 + offset * h)) + "]",
+                                          "bodies[1].min=[-0.01, -" + t + "]",
+                                          "bodies[2].min=[0.0, -" + t + "]",
+                                          "bodies[3].min=[0.2, -" + t + "]",
+                                          "node_sets[0].at=-" + t,
+                                          "contacts[0].friction=0.2"};
+      CHECK(incline_error(file, o) < (offset == 0.75 ? 0.05 : 0.4));
+    }
+  }
+}
+
 // The same block in 3D on a rigid plane whose surface lies halfway between
 // node planes (20 mm cells, 5 cells thick): the incline reference in 3D.
 TEST_CASE("incline: in 3D the block slides as g (sin - mu cos) t^2 / 2 on a coarse grid") {

@@ -137,27 +137,44 @@ struct ContactFields {
     for (int d = 0; d < D; ++d) g[d] = volume_gradient[field - 1][d][n];
     return g;
   }
-  // The unit normal out of field a towards b at node n: the volume gradient
-  // of the body with more volume there, whose surface is the better
-  // resolved (a rigid body's is exact), where it points within
-  // `normal_tolerance` of the direction that separates the two bodies'
-  // particles at the node (particle_spread.hpp); else that direction. The
-  // gradient is no surface's where the node lies deep inside a body (it
-  // vanishes there, or takes the sign of a particle row on a node plane)
-  // or near a face the other body does not touch (the end of a floor
-  // beside a block on it): docs/theory/contact.md. False where neither
-  // gives a direction.
+  // The unit normal out of field a towards b at node n: a volume gradient,
+  // where it points within `normal_tolerance` of the direction that
+  // separates the two bodies' particles at the node (particle_spread.hpp);
+  // else that direction. Which gradient: a rigid body's (exact); of two
+  // deformable bodies, the one nearer the separating direction (where
+  // none separates them, the one with more volume). The gradient is no
+  // surface's where the node lies deep inside a body (it vanishes there,
+  // or takes the sign of a particle row on a node plane), near a face the
+  // other body does not touch (the end of a floor beside a block on it),
+  // or at a body's corner resting on the other's face (it tilts by up to
+  // 45 degrees into the slide): docs/theory/contact.md. False where
+  // neither gives a direction.
   bool outward_normal(int a, int b, std::size_t n, Vec<D>& normal) const {
-    const bool from_b = is_rigid(b) || volume[b - 1][n] > volume[a - 1][n];
-    Vec<D> g = from_b ? Vec<D>(-gradient(b, n)) : gradient(a, n);
     Vec<D> apart;
-    if (separating_normal(spread[a - 1], volume[a - 1][n], spread[b - 1], volume[b - 1][n], n, spread_floor, apart) &&
-        !(g.norm() > 0.0 && g.dot(apart) >= std::cos(normal_tolerance) * g.norm()))
-      g = apart;
+    const bool separated =
+        separating_normal(spread[a - 1], volume[a - 1][n], spread[b - 1], volume[b - 1][n], n, spread_floor, apart);
+    Vec<D> g;
+    if (is_rigid(b)) {
+      g = -gradient(b, n);
+    } else {
+      const Vec<D> from_a = gradient(a, n), from_b = -gradient(b, n);
+      if (separated)
+        g = cosine(from_a, apart) >= cosine(from_b, apart) ? from_a : from_b;
+      else
+        g = volume[b - 1][n] > volume[a - 1][n] ? from_b : from_a;
+    }
+    if (separated && !(cosine(g, apart) >= std::cos(normal_tolerance))) g = apart;
     const double length = g.norm();
     if (!(length > 0.0)) return false;
     normal = g / length;
     return true;
+  }
+
+ private:
+  // The cosine of the angle between v and the unit vector u; -2 for v = 0.
+  static double cosine(const Vec<D>& v, const Vec<D>& u) {
+    const double length = v.norm();
+    return length > 0.0 ? v.dot(u) / length : -2.0;
   }
 };
 
