@@ -195,10 +195,9 @@ TEST_CASE("incline: on a coarse grid the block slides within 5 % and sticks, whe
 // 45 degrees into the slide, was the normal, and the block stuck: 0.005
 // and 0.001 m at 20 mm cells, 0.003 and 0.001 m at 10 mm. Of two deformable
 // bodies the gradient nearer the particles' separating direction is now
-// taken (ContactFields::outward_normal). At 3/4 it slides within 1 %
-// (the 5 % bound); at 1/2 it is still 30 % (20 mm) and 14 % (10 mm)
-// short, so that bound is 40 %, the stuck block's guard, not the issue's
-// 5 % (docs/validation/contact.md).
+// taken, of a body with at least a tenth of the pair's volume at the node
+// (ContactFields::outward_normal): within 1.8 % at every one of the four
+// (measured); 5 % is the issue's bound (docs/validation/contact.md).
 TEST_CASE("incline: on a deformable slab on a coarse grid the block slides with the surface mid-cell and at 3/4") {
   const std::string file = "contact/incline_block_slab.toml";
   for (const double h : {0.02, 0.01}) {
@@ -214,7 +213,7 @@ TEST_CASE("incline: on a deformable slab on a coarse grid the block slides with 
                                           "bodies[3].min=[0.2, -" + t + "]",
                                           "node_sets[0].at=-" + t,
                                           "contacts[0].friction=0.2"};
-      CHECK(incline_error(file, o) < (offset == 0.75 ? 0.05 : 0.4));
+      CHECK(incline_error(file, o) < 0.05);
     }
   }
 }

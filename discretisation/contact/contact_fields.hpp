@@ -141,8 +141,9 @@ struct ContactFields {
   // where it points within `normal_tolerance` of the direction that
   // separates the two bodies' particles at the node (particle_spread.hpp);
   // else that direction. Which gradient: a rigid body's (exact); of two
-  // deformable bodies, the one nearer the separating direction (where
-  // none separates them, the one with more volume). The gradient is no
+  // deformable bodies, the one nearer the separating direction, of a body
+  // with at least a tenth of the pair's volume at the node (where none
+  // separates them, the one with more volume). The gradient is no
   // surface's where the node lies deep inside a body (it vanishes there,
   // or takes the sign of a particle row on a node plane), near a face the
   // other body does not touch (the end of a floor beside a block on it),
@@ -158,9 +159,14 @@ struct ContactFields {
       g = -gradient(b, n);
     } else {
       const Vec<D> from_a = gradient(a, n), from_b = -gradient(b, n);
-      if (separated)
-        g = cosine(from_a, apart) >= cosine(from_b, apart) ? from_a : from_b;
-      else
+      if (separated) {
+        // A body with a sliver of volume at the node has a full-size
+        // gradient that is no surface's: it takes part from a tenth of the pair's volume.
+        const double least = 0.1 * (volume[a - 1][n] + volume[b - 1][n]);
+        const double cos_a = volume[a - 1][n] >= least ? cosine(from_a, apart) : -2.0;
+        const double cos_b = volume[b - 1][n] >= least ? cosine(from_b, apart) : -2.0;
+        g = cos_a >= cos_b ? from_a : from_b;
+      } else
         g = volume[b - 1][n] > volume[a - 1][n] ? from_b : from_a;
     }
     if (separated && !(cosine(g, apart) >= std::cos(normal_tolerance))) g = apart;
