@@ -341,7 +341,11 @@ Material bench_soil(const std::string& type) {
   p.friction_angle = 30.0 * std::numbers::pi / 180.0;
   p.cohesion = 10e3;
   p.tension_cutoff = p.apex();
-  if (type == "mohr_coulomb") return MohrCoulomb(p);
+  if (type == "mohr_coulomb") {
+    MohrCoulomb::Parameters m;
+    static_cast<FrictionalParameters&>(m) = p;
+    return MohrCoulomb(m);
+  }
   DruckerPrager::Parameters d;
   static_cast<FrictionalParameters&>(d) = p;
   return DruckerPrager(d);

@@ -68,6 +68,7 @@ struct FrictionalState {
   double shear = 0.0;       // plastic shear strain, sum of max - min of the principal d eps_p (-)
   double volumetric = 0.0;  // plastic volumetric strain, sum of tr d eps_p (-; dilation positive)
   double dissipated = 0.0;  // plastic work sigma : d eps_p (J/m^3)
+  double cell_length = 0.0;  // the particle's cell size (m), for mohr_coulomb's crack band softening; else 0
 };
 
 inline constexpr std::array<StateVariable, 3> frictional_state_variables{

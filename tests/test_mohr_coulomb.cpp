@@ -23,10 +23,13 @@
 //    the test's message).
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <numbers>
 #include <random>
+#include <utility>
+#include <vector>
 
 #include "discretisation/shapes/shape_linear.hpp"
 #include "engine/simulation.hpp"
@@ -154,6 +157,69 @@ TEST_CASE("energy: the work of the biaxial path is the stored energy plus the di
     // where it yields: 1e-3 of the dissipated energy.
     CHECK(stored + dissipated == doctest::Approx(work).epsilon(1e-3));
   }
+}
+
+TEST_CASE("softening: the strength follows phi and c from peak to residual over the plastic shear strain range") {
+  // phi 35 -> 25 degrees, c 20 -> 0 kPa, psi 5 -> 0 degrees, over gamma_p
+  // from 0.01 to 0.05; each step returns to the surface of gamma_p at its
+  // start (explicit), so the stress after every plastic step is that
+  // surface's biaxial strength, exactly.
+  const double s3 = 100e3, g0 = 0.01, gr = 0.05;
+  const MohrCoulomb m = mohr_coulomb(35.0, 20e3, 5.0,
+                                     "residual_friction_angle = 25.0\nresidual_cohesion = 0.0\n"
+                                     "residual_dilation_angle = 0.0\nsoftening_shear_strain = [0.01, 0.05]\n");
+  Biaxial<MohrCoulomb, StressState::plane_strain> test(m, s3);
+  int plastic = 0, softening = 0;
+  double worst = 0.0;
+  for (int k = 0; k < 8000; ++k) {
+    const double gamma = test.point.state.shear;
+    test.compress();
+    if (test.point.state.shear == gamma) continue;
+    const double r = std::clamp((gamma - g0) / (gr - g0), 0.0, 1.0);
+    const double expected = biaxial_strength(35.0 - 10.0 * r, 20e3 * (1.0 - r), s3);
+    worst = std::max(worst, std::abs(-test.point.sigma[1] - expected) / expected);
+    ++plastic;
+    if (r > 0.0 && r < 1.0) ++softening;
+  }
+  MESSAGE(plastic << " plastic steps, " << softening << " softening; largest error " << worst);
+  CHECK(softening > 100);
+  CHECK(worst <= 1e-9);
+  CHECK(test.point.state.shear > gr);
+  CHECK(-test.point.sigma[1] == doctest::Approx(biaxial_strength(25.0, 0.0, s3)).epsilon(1e-9));
+}
+
+TEST_CASE("softening with the crack band: the strength is a function of gamma_p h, the same slip on any cell") {
+  // Softening over a slip delta = gamma_p h from 0 to 2 mm: on cells of
+  // 10 and 20 mm the strength at the same gamma_p h is the same.
+  const MohrCoulomb m = mohr_coulomb(30.0, 20e3, 0.0,
+                                     "residual_cohesion = 2e3\nsoftening_shear_displacement = [0.0, 0.002]\n");
+  std::vector<std::pair<double, double>> curve[2];  // (gamma_p h, sigma_1) per cell size
+  const double cells[2] = {0.01, 0.02};
+  for (int i = 0; i < 2; ++i) {
+    Biaxial<MohrCoulomb, StressState::plane_strain> test(m, 50e3);
+    test.point.state.cell_length = cells[i];
+    for (int k = 0; k < 40000 && test.point.state.shear * cells[i] < 0.003; ++k) {
+      const double slip = test.point.state.shear * cells[i];
+      test.compress(2e-5 * 0.01 / cells[i]);  // the same slip per step on both cells
+      if (test.point.state.shear * cells[i] != slip) curve[i].emplace_back(slip, -test.point.sigma[1]);
+    }
+    CHECK(-test.point.sigma[1] == doctest::Approx(biaxial_strength(30.0, 2e3, 50e3)).epsilon(1e-9));
+  }
+  // Each point of the coarse cell's curve against the fine cell's, interpolated.
+  double worst = 0.0;
+  for (const auto& [slip, stress] : curve[1]) {
+    const auto hi = std::lower_bound(curve[0].begin(), curve[0].end(), std::pair{slip, 0.0});
+    if (hi == curve[0].begin() || hi == curve[0].end()) continue;
+    const auto lo = hi - 1;
+    const double w = (slip - lo->first) / (hi->first - lo->first);
+    worst = std::max(worst, std::abs(stress - (lo->second + w * (hi->second - lo->second))) / stress);
+  }
+  MESSAGE("largest difference between the cells' strength at the same slip: " << worst);
+  CHECK(curve[1].size() > 50);
+  // The curves sample one function of the slip, about 3e-7 m apart: they
+  // differ by the interpolation across one step at the residual kink,
+  // below 1e-4 of the stress; 1e-3 leaves room.
+  CHECK(worst <= 1e-3);
 }
 
 TEST_CASE("tension cut-off: sigma_1 <= T, and hydrostatic extension ends at the cut apex") {
@@ -326,6 +392,25 @@ TEST_CASE("validation: each bad parameter names its file, line and key") {
                   "[0, 1732.05] Pa") != std::string::npos);
   CHECK(error("friction_angle = 30.0\ntension_cutoff = -1.0\n").find("materials.m.tension_cutoff: expected") !=
         std::string::npos);
+  const std::string soft = "friction_angle = 30.0\ncohesion = 1e3\n";
+  CHECK(error(soft + "residual_friction_angle = 35.0\nsoftening_shear_strain = [0.0, 0.1]\n")
+            .find("material.toml:7: materials.m.residual_friction_angle: expected a residual friction angle in (0, phi] = "
+                  "(0, 30] degrees") != std::string::npos);
+  CHECK(error(soft + "residual_cohesion = 2e3\nsoftening_shear_strain = [0.0, 0.1]\n")
+            .find("materials.m.residual_cohesion: expected a residual cohesion in [0, c] = [0, 1000] Pa") !=
+        std::string::npos);
+  CHECK(error(soft + "residual_cohesion = 0.0\n")
+            .find("materials.m.softening_shear_strain: missing; expected exactly one of softening_shear_strain") !=
+        std::string::npos);
+  CHECK(error(soft + "residual_cohesion = 0.0\nsoftening_shear_strain = [0.1, 0.05]\n")
+            .find("material.toml:8: materials.m.softening_shear_strain: expected [start, end] with 0 <= start < end") !=
+        std::string::npos);
+  CHECK(error(soft + "residual_cohesion = 0.0\nsoftening_shear_strain = [0.0, 0.1]\nsoftening_shear_displacement = [0.0, 0.1]\n")
+            .find("expected exactly one of") != std::string::npos);
+  CHECK(error(soft + "softening_shear_displacement = [0.0, 0.01]\n")
+            .find("material.toml:7: materials.m.softening_shear_displacement: expected no softening range without a "
+                  "residual strength") != std::string::npos);
+  CHECK(error(soft + "residual_cohesion = 0.0\nsoftening_shear_displacement = [0.0, 0.01]\n") == "no error");
   const std::string dp = "type = \"drucker_prager\"\ndensity = 2000.0\nyoungs_modulus = 50e6\npoisson_ratio = 0.3\n"
                          "friction_angle = 30.0\n";
   CHECK(material_error(dp).find("materials.m.fit: missing required key") != std::string::npos);

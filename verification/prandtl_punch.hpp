@@ -65,7 +65,7 @@ struct PrandtlPunch {
       if (m->parameters.hardening == VonMises::Hardening::linear && m->parameters.hardening_modulus == 0.0)
         phi = 0.0, c = m->parameters.yield_stress / std::sqrt(3.0);
     } else if (const auto* m = std::get_if<MohrCoulomb>(&model)) {
-      if (m->parameters.dilation_angle == m->parameters.friction_angle)
+      if (m->parameters.dilation_angle == m->parameters.friction_angle && !m->parameters.softening.on)
         phi = m->parameters.friction_angle, c = m->parameters.cohesion;
     } else if (const auto* m = std::get_if<DruckerPrager>(&model)) {
       if (m->parameters.dilation_angle == m->parameters.friction_angle &&
@@ -74,7 +74,7 @@ struct PrandtlPunch {
     }
     t.require(phi >= 0.0 && c > 0.0, "punch",
               "a punch in contact with a perfectly plastic von_mises body (hardening_modulus = 0), or a mohr_coulomb "
-              "or plane_strain-fit drucker_prager body with cohesion > 0 and dilation_angle = friction_angle");
+              "body without softening or a plane_strain-fit drucker_prager body with cohesion > 0 and dilation_angle = friction_angle");
     r.bearing = bearing_capacity_factor(phi);
     r.limit = c * r.bearing;
     return r;
