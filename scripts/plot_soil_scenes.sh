@@ -4,8 +4,9 @@
 #   scripts/plot_soil_scenes.sh FLOWMPM RUNS_DIR [PNG_DIR]
 # FLOWMPM is the engine binary (e.g. build/flowmpm), RUNS_DIR where the runs
 # go (one folder per run, made afresh), PNG_DIR where the figures go
-# (default: the repository's docs/). The runs take about 3 minutes on 2
-# cores, most of it the footing at 10 mm cells.
+# (default: the repository's docs/). The runs take about 8 minutes on 2
+# cores, most of it the footing at 10 mm cells and the tall column on
+# cells of L0 / 40.
 #
 # Figures (900 x 500 px):
 #   soil_footing.png  the footing's pressure against its travel at 40, 20
@@ -13,6 +14,9 @@
 #   soil_slope.png    the infinite slope's displacement along the slope
 #                     against the height above the base, in the middle of
 #                     the layer, at beta = 25 and 35 degrees after 0.5 s
+#   soil_column.png   the granular columns' deposits (the top of the
+#                     particles along x) at a = 0.5, 1 and 2 on cells of
+#                     L0 / 20 and L0 / 40, with Lube et al.'s run-out
 # Needs gnuplot (scripts/setup.sh --tests installs it) and python3-h5py.
 set -euo pipefail
 bin=${1:?usage: plot_soil_scenes.sh FLOWMPM RUNS_DIR [PNG_DIR]}
@@ -62,6 +66,32 @@ for y, ux in sorted(zip(x0[middle, 1], u[middle, 0])):
 PY
 done
 
+for a in 0.5 1 2; do
+  height=$("$python" -c "print(0.1 * $a)")
+  for size in "0.005 [208,58] 5e-5" "0.0025 [416,116] 2.5e-5"; do
+    set -- $size
+    out=$runs/column_${a}_$1
+    rm -rf "$out"
+    echo "plot_soil_scenes: running the column a = $a on $1 m cells" >&2
+    "$bin" run "$root/configs/soils/column_collapse.toml" --quiet --output "$out" --set grid.cell_size=$1 \
+      --set "grid.cells=$2" --set analysis.dt=$3 --set "bodies[0].max=[0.1, $height]" --set reference.height=$height
+    # The deposit's surface: the highest particle top in each column of 2.5 mm.
+    PYTHONPATH="$root/python" "$python" - "$out" $1 >"$data/column_${a}_$1.dat" <<'PY'
+import sys
+import numpy as np
+import flowmpm
+with flowmpm.Results(sys.argv[1]) as r:
+    x = r.field("position", -1)
+half = 0.25 * float(sys.argv[2])  # half a particle (2 x 2 per cell)
+bins = np.floor((x[:, 0] + half) / 0.0025).astype(int)
+for b in range(bins.max() + 1):
+    inside = bins == b
+    if inside.any():
+        print(1000 * 0.0025 * (b + 1), 1000 * (x[inside, 1].max() + half))
+PY
+  done
+done
+
 gnuplot <<GP
 set terminal pngcairo size 900,500 font ",11" noenhanced
 set output "$png/soil_footing.png"
@@ -86,5 +116,22 @@ set xrange [1e-4:1000]
 set yrange [0:0.5]
 plot "$data/slope_25.dat" u (abs(\$2)):1 w p pt 7 ps 0.4 lc rgb "#1f77b4" t "beta = 25 deg (stands)", \
      "$data/slope_35.dat" u 2:1 w p pt 7 ps 0.4 lc rgb "#d62728" t "beta = 35 deg (flows)"
+set output "$png/soil_column.png"
+unset logscale x
+set xlabel "distance from the wall (mm)"
+set ylabel "height (mm)"
+set title "Granular columns, L0 = 100 mm, phi = 30 deg: deposits; arrows: Lube et al. (2005) run-out 1.2 a L0 + L0"
+set key top right
+set xrange [0:700]
+set yrange [0:210]
+set arrow from 160,40 to 160,0 lc rgb "#2ca02c"
+set arrow from 220,40 to 220,0 lc rgb "#1f77b4"
+set arrow from 340,40 to 340,0 lc rgb "#d62728"
+plot "$data/column_0.5_0.005.dat" u 1:2 w l lw 2 lc rgb "#2ca02c" t "a = 0.5, L0 / 20", \
+     "$data/column_0.5_0.0025.dat" u 1:2 w l lw 2 dt 2 lc rgb "#2ca02c" t "a = 0.5, L0 / 40", \
+     "$data/column_1_0.005.dat" u 1:2 w l lw 2 lc rgb "#1f77b4" t "a = 1, L0 / 20", \
+     "$data/column_1_0.0025.dat" u 1:2 w l lw 2 dt 2 lc rgb "#1f77b4" t "a = 1, L0 / 40", \
+     "$data/column_2_0.005.dat" u 1:2 w l lw 2 lc rgb "#d62728" t "a = 2, L0 / 20", \
+     "$data/column_2_0.0025.dat" u 1:2 w l lw 2 dt 2 lc rgb "#d62728" t "a = 2, L0 / 40"
 GP
-echo "plot_soil_scenes: wrote $png/soil_footing.png and $png/soil_slope.png" >&2
+echo "plot_soil_scenes: wrote $png/soil_footing.png, $png/soil_slope.png and $png/soil_column.png" >&2

@@ -16,6 +16,7 @@
 #include "engine/simulation_base.hpp"
 #include "verification/axial_vibration.hpp"
 #include "verification/cantilever.hpp"
+#include "verification/column_collapse.hpp"
 #include "verification/column_self_weight.hpp"
 #include "verification/cylinder_transport.hpp"
 #include "verification/elastic_impact.hpp"
@@ -40,7 +41,7 @@ using ReferenceSolution =
     std::variant<AxialVibration, ElasticWave, UniaxialStress, ColumnSelfWeight, SlabTransport, ThermalStress,
                  SwellingSlab, SwellingBending, UniformStressReference, PlateWithHole, ThickCylinder, Cantilever,
                  ElasticImpact, TaylorImpact, Incline, PrandtlPunch, LapShear, RigidRotation,
-                 CylinderTransport>;
+                 CylinderTransport, ColumnCollapse>;
 using ReferenceSolutions = Registry<ReferenceSolution>;
 
 class Reference {
