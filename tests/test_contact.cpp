@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "discretisation/shapes/shape_functions.hpp"
+#include "run_program.hpp"
 #include "test_helpers.hpp"
 
 using namespace flowmpm;
@@ -657,4 +658,26 @@ TEST_CASE("bad contact input is rejected with the file, line and key") {
     const std::string m = rejection("touch", two_blocks + contact + "touch_fraction = -1.0\n");
     CHECK(m.find("contacts[0].touch_fraction: expected a fraction of a node's volume in (0, 1]") != std::string::npos);
   }
+}
+
+TEST_CASE("check warns of a body in contact thinner than 3 cells, naming it, its thickness and the minimum") {
+  // The block of incline_block_rigid.toml is 0.1 m thick: 2.5 cells of
+  // 40 mm, where it slides 27 % short with the plane's surface mid-cell,
+  // and 3 of 33.3 mm, where it slides within 0.3 % at every offset
+  // (docs/guide/contact.md).
+  testing::TempDir dir("flowmpm_thin_contact");
+  auto check = [&](const std::string& cell, const std::string& cells) {
+    const testing::Result r = testing::run_flowmpm(
+        {"check", testing::config("contact/incline_block_rigid.toml").string(), "--set", "grid.cell_size=" + cell,
+         "--set", "grid.cells=" + cells, "--set", "grid.origin=[-0.04, -0.08]", "--set", "bodies[1].min=[-0.01, -0.05]"},
+        dir.path);
+    CHECK_MESSAGE(r.status == 0, r.output);
+    return r.output;
+  };
+  const std::string coarse = check("0.04", "[77, 8]");
+  CHECK(testing::contains(coarse, "body 'block' is 2.5 cells thick (0.1 m, the smallest extent of its particles) "
+                                  "and in contact: below 3 cells"));
+  CHECK(testing::contains(coarse, "cells of 0.0333333 m or less give it 3"));
+  CHECK_FALSE(testing::contains(coarse, "body 'floor' is"));  // rigid: its thickness does not matter
+  CHECK_FALSE(testing::contains(check("0.0333333333333", "[92, 9]"), "cells thick"));
 }
