@@ -111,12 +111,13 @@ TEST_CASE("granular column collapse, a = 0.5, 1 and 2: run-out and final height 
   // differ by material: (L - L0) / L0 = 1.2 a for a < 1.8 (sand, rice,
   // sugar [Lube 2005]) to 1.8 a (glass beads [Lajeunesse 2005]); a
   // continuum of one friction angle is none of them, and its run-out grows
-  // with resolution (docs/validation/soil_scenes.md: 1.06, 1.42, 1.99 at
+  // with resolution (docs/validation/soil_scenes.md: 1.03, 1.41, 1.98 at
   // a = 1 on cells of L0 / 10, 20, 40). The bound is that range widened by
   // 20 %: [0.8 x 1.2 a, 1.2 x 1.8 a]. It fails with FLIP (2.6 at a = 1)
   // and at a = 0.5 on cells of L0 / 10 (0.40).
   // Final height: the top of a column with a < 1.15 stays (H = H0), above
-  // it H / L0 = a^0.4 [Lube 2005]; within 15 % (measured 2 %, 5 %, 12 %).
+  // it H / L0 = a^0.4 [Lube 2005]; within 15 % (measured 0, 6 and 13 %,
+  // converged: 0, 8 and 13 % on cells of L0 / 40).
   // At rest: the kinetic energy at the end below 1e-3 of its peak.
   for (const double a : {0.5, 1.0, 2.0}) {
     const std::string height = std::to_string(0.1 * a);
