@@ -213,9 +213,15 @@ struct NodeContact {
       NodalField<D>& f = *corrected[k];
       if constexpr (Updated) {
         // The contact's impulse on the field times the mean of its velocity
-        // at the start and at the end of the step.
-        sums.work += m[k] * dv[k].dot(0.5 * (v_start[k] + v[k] + dv[k]));
+        // at the start and at the end of the step. At a held node
+        // (grid_update.hpp: a sliver of a body's mass with the full force of
+        // its stress) p_I / m_I is no velocity of the body, and what the
+        // contact leaves of it (friction takes at most mu times the normal
+        // change) would book a work of order (f_I dt)^2 / m_I: its particles
+        // take the impulse in N_Ip p_I / m_I, moving at about the node's
+        // start-of-step velocity, so the impulse's work is its product with that.
         const bool held = held_node<D, Shape>(f, n, system.dt);
+        sums.work += m[k] * dv[k].dot(held ? v_start[k] : Vec<D>(0.5 * (v_start[k] + v[k] + dv[k])));
         for (int d = 0; d < D; ++d) {
           f.momentum[d][n] += m[k] * dv[k][d];
           if (!held) f.velocity[d][n] += dv[k][d];

@@ -184,7 +184,12 @@ TEST_CASE("incline: on a coarse grid the block slides within 5 % and sticks, whe
     std::vector<std::string> slides = grid, sticks = grid;
     slides.push_back("contacts[0].friction=0.2");
     sticks.push_back("contacts[0].friction=0.7");
-    CHECK(incline_error(file, slides) < 0.05);
+    double energy_error = 1.0;
+    CHECK(incline_error(file, slides, nullptr, &energy_error) < 0.05);
+    // As on the fine grid (check_incline): measured at most 0.0023; 0.92 to
+    // 0.98 at offset 3/4 when the held nodes' impulses were booked with
+    // their velocity after the update (tasks/contact.hpp).
+    CHECK(energy_error < 0.02);
     CHECK(incline_error(file, sticks) < 0.01);  // the drift in cells
   }
 }
@@ -214,7 +219,9 @@ TEST_CASE("incline: on a deformable slab on a coarse grid the block slides with 
                                           "bodies[3].min=[0.2, -" + t + "]",
                                           "node_sets[0].at=-" + t,
                                           "contacts[0].friction=0.2"};
-      CHECK(incline_error(file, o) < 0.05);
+      double energy_error = 1.0;
+      CHECK(incline_error(file, o, nullptr, &energy_error) < 0.05);
+      CHECK(energy_error < 0.02);  // measured at most 4e-4; 0.74 to 0.90 at 3/4 before (above)
     }
   }
 }
@@ -254,6 +261,29 @@ TEST_CASE("a disk on the rigid incline slips as a block below mu = tan(30) / 3, 
   CHECK(incline_error(file, {}) < 0.03);
 }
 
+// The disk slipping (mu = 0.1) on a coarse grid with the plane's surface
+// 0, 1/4 and 1/2 of a cell above a node plane, at 20 and 10 mm cells (the
+// disk 10 and 20 cells across): measured within 3e-4 of the closed form.
+// Not asserted, and in docs/validation/contact.md: at 3/4 (its lowest
+// particle row on a node plane) it is 8.4 % and 5.9 % off, and rolling
+// (mu = 0.3) at 20 mm is 6.7 to 7.7 % short at every offset.
+TEST_CASE("incline: the disk slips within 5 % on a coarse grid with the surface between node planes") {
+  const std::string file = "contact/incline_disk_rigid.toml";
+  for (const double h : {0.02, 0.01}) {
+    for (const double offset : {0.0, 0.25, 0.5}) {
+      CAPTURE(h);
+      CAPTURE(offset);
+      const std::vector<std::string> o = {"grid.cell_size=" + std::to_string(h),
+                                          h == 0.02 ? "grid.cells=[151, 16]" : "grid.cells=[301, 31]",
+                                          "grid.origin=[-0.02, " + std::to_string(-(0.04 + offset * h)) + "]",
+                                          "contacts[0].friction=0.1"};
+      double energy_error = 1.0;
+      CHECK(incline_error(file, o, nullptr, &energy_error) < 0.05);
+      CHECK(energy_error < 0.05);  // measured at most 0.019
+    }
+  }
+}
+
 TEST_CASE("a rigid flat punch in a von Mises block: Prandtl's limit pressure, converging with the cells") {
   // (2 + pi) k at 40, 20 and 10 mm cells; within 10 % at the finest (the
   // issue's tolerance), and the error falls with each refinement.
@@ -272,6 +302,20 @@ TEST_CASE("a rigid flat punch in a von Mises block: Prandtl's limit pressure, co
   CHECK(error[2] < 0.1);
   CHECK(error[1] < error[0]);
   CHECK(error[2] < error[1]);
+  // The block's surface and the punch's face 1/4, 1/2 and 3/4 of a cell
+  // above a node plane (20 mm cells, the block that much deeper, its held
+  // base on a node plane): measured 1.9, 5.9 and 2.4 % (2.1 % on the node
+  // plane above); at 10 mm 0.5 to 1.3 % at the four offsets
+  // (docs/validation/contact.md). 10 % is the issue's tolerance.
+  for (const double offset : {0.25, 0.5, 0.75}) {
+    CAPTURE(offset);
+    const std::string top = std::to_string(0.6 + 0.02 * offset), face = std::to_string(0.66 + 0.02 * offset);
+    const RunSummary s = testing::run(read_case(
+        testing::config(file), {sizes[1][0], sizes[1][1], "bodies[0].max=[1.2, " + top + "]",
+                                "bodies[1].min=[0.5, " + top + "]", "bodies[1].max=[0.7, " + face + "]"}));
+    MESSAGE("punch, 20 mm, surface at offset " << offset << ": error " << s.errors.at("pressure"));
+    CHECK(s.errors.at("pressure") < 0.1);
+  }
 }
 
 TEST_CASE("incline: a contact group, two halves of the block in one field, slides as the block") {

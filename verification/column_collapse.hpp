@@ -83,6 +83,7 @@ struct ColumnCollapse {
     if constexpr (D == 2) {
       double farthest = -std::numeric_limits<double>::infinity(), front = farthest, top = farthest, energy = 0.0;
       for (const auto& b : system.batches) {
+        if (system.is_rigid(b)) continue;  // a rigid obstacle is no part of the deposit
         const double half = 0.5 * b.particle_length;
         for (std::size_t p = 0; p < b.size(); ++p) {
           const double x = b.x[p][0] - wall + half, y = b.x[p][1] - base + half;
