@@ -46,11 +46,16 @@
 // axisymmetric (x the radius from the axis): the program reports per size
 // the rates of both, 1 and 2 threads, and the axisymmetric step's cost
 // over the plane-strain step's (their rates' inverse ratio).
+// With --roofline the program first measures this machine's bandwidth and
+// FMA rate on 1 and 2 threads (bench/roofline.hpp, which says how), and
+// prints under every row of the main table the flops and bytes of one
+// particle-step, the rate each limit allows, and the fraction of the
+// lower one the step reaches on 1 and 2 threads.
 //
 //   build/bench/bench_throughput [--sizes 1e4,1e5,1e6] [--particle-steps N]
 //                                [--repeats R] [--shape linear|gimp|bspline2|bspline3]
 //                                [--transport heat|both] [--contact] [--transfers] [--axisymmetric]
-//                                [--material mohr_coulomb|drucker_prager] [--csv FILE]
+//                                [--material mohr_coulomb|drucker_prager] [--roofline] [--csv FILE]
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -71,6 +76,7 @@
 #include "engine/schemes.hpp"
 #include "engine/simulation.hpp"
 #include "io/results/results_h5.hpp"
+#include "roofline.hpp"
 
 using namespace flowmpm;
 using Clock = std::chrono::steady_clock;
@@ -524,7 +530,7 @@ int main(int argc, char** argv) {
   double particle_steps = 3e7;  // per measurement, so that each lasts ~1 s or more
   int repeats = 3;
   std::string csv_path, shape = "linear", transport, material;
-  bool contact = false, transfers = false, axisymmetric = false;
+  bool contact = false, transfers = false, axisymmetric = false, roofline = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto next = [&] {
@@ -542,6 +548,7 @@ int main(int argc, char** argv) {
     else if (a == "--contact") contact = true;
     else if (a == "--transfers") transfers = true;
     else if (a == "--axisymmetric") axisymmetric = true;
+    else if (a == "--roofline") roofline = true;
     else if (a == "--material") {
       material = next();
       if (material != "mohr_coulomb" && material != "drucker_prager") {
@@ -559,7 +566,7 @@ int main(int argc, char** argv) {
     else {
       std::cerr << "usage: bench_throughput [--sizes 1e4,1e5,1e6] [--particle-steps 3e7] [--repeats 3] [--shape linear] "
                    "[--transport heat|both] [--contact] [--transfers] [--axisymmetric] [--material mohr_coulomb|drucker_prager] "
-                   "[--csv FILE]\n";
+                   "[--roofline] [--csv FILE]\n";
       return a == "--help" ? 0 : 1;
     }
   }
@@ -600,6 +607,14 @@ int main(int argc, char** argv) {
               shape.c_str(), repeats);
   const double graph_seconds = empty_graph_seconds_per_step();
   std::printf("flow graph alone (USL wiring, empty stages, 2 threads): %.2f us per step\n", 1e6 * graph_seconds);
+  bench::MachineLimits limits[2];
+  if (roofline) {
+    for (int t = 0; t < 2; ++t) {
+      limits[t] = bench::measure_machine(t + 1);
+      std::printf("this machine, %d thread%s: %.1f GB/s (a[i] += s b[i]), %.1f GF/s (FMA, %d-bit vectors)\n", t + 1,
+                  t ? "s" : "", limits[t].bandwidth / 1e9, limits[t].flops / 1e9, bench::vector_bits());
+    }
+  }
   std::printf("%10s %6s %10s %10s %8s %10s %8s %8s %9s %9s %9s %8s %8s  %s\n", "particles", "steps", "1 thr", "2 thr",
               "speedup", "serial 1t", "graph vs", "graph", "setup", "B/p peak", "B/p model", "output", "output",
               "shares of the graph's nodes at 1 thread");
@@ -611,6 +626,7 @@ int main(int argc, char** argv) {
     csv << "particles,steps,rate_1t,rate_2t,speedup,rate_serial_1t,graph_vs_serial,graph_cost,setup_s_per_million,"
            "bytes_per_particle_peak,bytes_per_particle_model,output_bytes_per_particle,output_seconds_per_particle";
     for (const StageGroup& node : nodes) csv << ",share_" << group_name(node);
+    if (roofline) csv << ",flops_per_particle_step,bytes_per_particle_step,limit_1t,limit_2t,fraction_1t,fraction_2t";
     csv << "\n";
   }
   for (double size : sizes) {
@@ -651,8 +667,24 @@ int main(int argc, char** argv) {
           << "," << graph_cost << "," << median(setup) / (n / 1e6) << "," << bpp_peak << "," << bpp_model << "," << out_bytes << ","
           << out_seconds;
       for (const auto& share : shares) csv << "," << median(share);
-      csv << "\n";
     }
+    if (roofline) {
+      // The rate each limit allows: bandwidth over bytes, FMA rate over flops.
+      const double flops = bench::flops_per_particle_step(shape), bytes = 2.0 * bpp_model;
+      double limit[2], fraction[2];
+      for (int t = 0; t < 2; ++t) {
+        limit[t] = std::min(limits[t].bandwidth / bytes, limits[t].flops / flops);
+        fraction[t] = (t ? m2 : m1) / limit[t];
+      }
+      std::printf("%10s roofline: %.0f flop and %.0f B per particle-step; limits 1t %.1f (memory) / %.1f (FMA), "
+                  "2t %.1f / %.1f Mp-st/s; the step reaches %.2f (1t) and %.2f (2t) of the lower\n",
+                  "", flops, bytes, limits[0].bandwidth / bytes / 1e6, limits[0].flops / flops / 1e6,
+                  limits[1].bandwidth / bytes / 1e6, limits[1].flops / flops / 1e6, fraction[0], fraction[1]);
+      std::fflush(stdout);
+      if (csv) csv << "," << flops << "," << bytes << "," << limit[0] << "," << limit[1] << "," << fraction[0] << ","
+                   << fraction[1];
+    }
+    if (csv) csv << "\n";
   }
   return 0;
 }
