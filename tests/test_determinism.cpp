@@ -12,6 +12,9 @@
 #include <tbb/global_control.h>
 
 #include <algorithm>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "discretisation/shapes/shape_bspline.hpp"
 #include "discretisation/shapes/shape_gimp.hpp"
@@ -105,6 +108,42 @@ TEST_CASE("contact: 1 thread, 2 threads and the serial step agree bit for bit") 
   check_dimension<2>(coulomb_contact);
   check_dimension<3>(coulomb_contact);
   check_dimension<2, GimpShape>(coulomb_contact);
+}
+TEST_CASE("contact on a coarse grid, the surface between node planes: 1 thread, 2 threads and serial agree bit for bit") {
+  // The block of configs/contact on the rigid plane (mu = 0.2) and on the
+  // deformable slab, 20 mm cells, the surface 3/4 of a cell above a node
+  // plane: the block's bottom particle row on a node plane, so that held
+  // sliver nodes take part in the contact (tests/test_contact.cpp), 0.05 s.
+  const std::vector<std::pair<std::string, std::vector<std::string>>> cases = {
+      {"contact/incline_block_rigid.toml",
+       {"grid.cell_size=0.02", "grid.cells=[154, 9]", "grid.origin=[-0.02, -0.055]", "contacts[0].friction=0.2",
+        "analysis.end_time=0.05"}},
+      {"contact/incline_block_slab.toml",
+       {"grid.cell_size=0.02", "grid.cells=[154, 10]", "grid.origin=[-0.02, -0.055]", "bodies[1].min=[-0.01, -0.055]",
+        "bodies[2].min=[0.0, -0.055]", "bodies[3].min=[0.2, -0.055]", "node_sets[0].at=-0.055",
+        "contacts[0].friction=0.7", "analysis.end_time=0.05"}}};
+  // The cases' time step is automatic (from the particles' largest speed,
+  // a max, the same in any order): stepped to their end time.
+  const auto run_to_end = [](const Case& c, int threads, bool serial) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+    auto sim = testing::simulation<2, LinearShape>(c);
+    std::int64_t steps = 0;
+    for (; sim.system().t < c.time_control.end_time; ++steps) serial ? sim.advance_serial() : sim.advance();
+    CHECK(steps > 500);
+    return sim.snapshot(default_output_fields());
+  };
+  for (const auto& [file, overrides] : cases) {
+    CAPTURE(file);
+    const Case c = read_case(testing::config(file), overrides);
+    const ParticleSnapshot one = run_to_end(c, 1, false);
+    check_identical(one, run_to_end(c, 2, false));
+    check_identical(one, run_to_end(c, 2, true));
+    // The block slid or was pressed: the comparison is not between zeros.
+    double max_speed = 0.0;
+    for (double v : one.find("velocity")->real) max_speed = std::max(max_speed, std::abs(v));
+    MESSAGE(file << ": largest velocity component " << max_speed << " m/s");
+    CHECK(max_speed > 1e-3);
+  }
 }
 TEST_CASE("an imperfect interface: 1 thread, 2 threads and the serial step agree bit for bit") {
   // The lap shear of configs/contact (two strands bonded by an interface,
