@@ -126,6 +126,7 @@ struct NodeContact {
   // the velocity at the start of the step.
   std::vector<double> m;
   std::vector<Vec<D>> v, dv, v_start;
+  std::vector<char> held;  // per field: whether node n is held for it (grid_update.hpp)
 
   NodeContact(DiscreteSystem<D, Shape>& s, double time, std::vector<NodalField<D>*> nodal)
       : system(s),
@@ -134,7 +135,8 @@ struct NodeContact {
         m(s.field_count()),
         v(s.field_count()),
         dv(s.field_count()),
-        v_start(s.field_count()) {
+        v_start(s.field_count()),
+        held(s.field_count()) {
     for (const RigidMotion<D>& r : contact.rigid) rigid_velocity.push_back(r.at(time));
     for (int d = 0; d < D; ++d) node_volume *= s.grid.h[d];
   }
@@ -174,6 +176,7 @@ struct NodeContact {
       dv[k].setZero();
     }
     if (present + (contact.rigid_at(n) ? 1 : 0) < 2) return;
+    for (int k = 0; k < fields; ++k) held[k] = m[k] > 0.0 && held_node<D, Shape>(*corrected[k], n, system.dt);
     Vec<D> normal;
     for (int a = 0; a < fields; ++a) {
       if (!(m[a] > 0.0)) continue;
@@ -182,6 +185,12 @@ struct NodeContact {
         if (!(m[b] > 0.0)) continue;
         const int pair = contact.pair_index(a, b);
         if (pair >= 0 && is_interface(contact.pairs[static_cast<std::size_t>(pair)].law)) continue;
+        // A held node (a sliver of a body's mass with the whole force of
+        // its stress, tasks/grid_update.hpp) has no velocity of its body:
+        // two bodies that may part meet at the nodes beside it
+        // (docs/theory/contact.md). Fields in stick stay one field.
+        if ((held[a] || held[b]) && pair >= 0 && detects_contact(contact.pairs[static_cast<std::size_t>(pair)].law))
+          continue;
         const Vec<D> va = v[a] + dv[a], vb = v[b] + dv[b];
         const Vec<D> r = (m[b] / (m[a] + m[b])) * (va - vb);  // v_a - v_cm
         const Vec<D> change_a = this->change(pair, a, b, n, r, normal);
@@ -220,11 +229,10 @@ struct NodeContact {
         // change) would book a work of order (f_I dt)^2 / m_I: its particles
         // take the impulse in N_Ip p_I / m_I, moving at about the node's
         // start-of-step velocity, so the impulse's work is its product with that.
-        const bool held = held_node<D, Shape>(f, n, system.dt);
-        sums.work += m[k] * dv[k].dot(held ? v_start[k] : Vec<D>(0.5 * (v_start[k] + v[k] + dv[k])));
+        sums.work += m[k] * dv[k].dot(held[k] ? v_start[k] : Vec<D>(0.5 * (v_start[k] + v[k] + dv[k])));
         for (int d = 0; d < D; ++d) {
           f.momentum[d][n] += m[k] * dv[k][d];
-          if (!held) f.velocity[d][n] += dv[k][d];
+          if (!held[k]) f.velocity[d][n] += dv[k][d];
           f.velocity_change[d][n] += dv[k][d];
         }
       } else {

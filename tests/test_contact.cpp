@@ -203,25 +203,34 @@ TEST_CASE("incline: on a coarse grid the block slides within 5 % and sticks, whe
 // bodies the gradient nearer the particles' separating direction is now
 // taken, of a body with at least a tenth of the pair's volume at the node
 // (ContactFields::outward_normal): within 1.8 % at every one of the four
-// (measured); 5 % is the issue's bound (docs/validation/contact.md).
-TEST_CASE("incline: on a deformable slab on a coarse grid the block slides with the surface mid-cell and at 3/4") {
+// (measured); 5 % is the issue's bound (docs/validation/contact.md). At
+// 3/4 the block's bottom particle row lies on a node plane and the nodes
+// a cell below hold a sliver of its mass: while they took part in the
+// contact, the block at mu = 0.7 crept 1.73 (20 mm) and 1.01 cells
+// (10 mm); now 0.0015 and 0.0028 (tasks/contact.hpp). 1 % of a cell is
+// the issue's bound.
+TEST_CASE("incline: on a deformable slab on a coarse grid the block slides with the surface mid-cell and at 3/4, and sticks at 3/4") {
   const std::string file = "contact/incline_block_slab.toml";
   for (const double h : {0.02, 0.01}) {
     for (const double offset : {0.5, 0.75}) {
       CAPTURE(h);
       CAPTURE(offset);
       const std::string t = std::to_string((2.0 + offset) * h);
-      const std::vector<std::string> o = {"grid.cell_size=" + std::to_string(h),
-                                          h == 0.02 ? "grid.cells=[154, 10]" : "grid.cells=[300, 22]",
-                                          "grid.origin=[-0.02, " + std::to_string(-(0.04 + offset * h)) + "]",
-                                          "bodies[1].min=[-0.01, -" + t + "]",
-                                          "bodies[2].min=[0.0, -" + t + "]",
-                                          "bodies[3].min=[0.2, -" + t + "]",
-                                          "node_sets[0].at=-" + t,
-                                          "contacts[0].friction=0.2"};
+      std::vector<std::string> o = {"grid.cell_size=" + std::to_string(h),
+                                    h == 0.02 ? "grid.cells=[154, 10]" : "grid.cells=[300, 22]",
+                                    "grid.origin=[-0.02, " + std::to_string(-(0.04 + offset * h)) + "]",
+                                    "bodies[1].min=[-0.01, -" + t + "]",
+                                    "bodies[2].min=[0.0, -" + t + "]",
+                                    "bodies[3].min=[0.2, -" + t + "]",
+                                    "node_sets[0].at=-" + t,
+                                    "contacts[0].friction=0.2"};
       double energy_error = 1.0;
       CHECK(incline_error(file, o, nullptr, &energy_error) < 0.05);
       CHECK(energy_error < 0.02);  // measured at most 4e-4; 0.74 to 0.90 at 3/4 before (above)
+      if (offset == 0.75) {
+        o.back() = "contacts[0].friction=0.7";
+        CHECK(incline_error(file, o) < 0.01);  // the drift in cells
+      }
     }
   }
 }

@@ -110,8 +110,8 @@ TEST_CASE("contact: 1 thread, 2 threads and the serial step agree bit for bit") 
   check_dimension<2, GimpShape>(coulomb_contact);
 }
 TEST_CASE("contact on a coarse grid, the surface between node planes: 1 thread, 2 threads and serial agree bit for bit") {
-  // The block of configs/contact on the rigid plane (mu = 0.2) and on the
-  // deformable slab, 20 mm cells, the surface 3/4 of a cell above a node
+  // The block of configs/contact sliding on the rigid plane (mu = 0.2) and
+  // sticking on the deformable slab (mu = 0.7), 20 mm cells, the surface 3/4 of a cell above a node
   // plane: the block's bottom particle row on a node plane, so that held
   // sliver nodes take part in the contact (tests/test_contact.cpp), 0.05 s.
   const std::vector<std::pair<std::string, std::vector<std::string>>> cases = {
@@ -138,11 +138,12 @@ TEST_CASE("contact on a coarse grid, the surface between node planes: 1 thread, 
     const ParticleSnapshot one = run_to_end(c, 1, false);
     check_identical(one, run_to_end(c, 2, false));
     check_identical(one, run_to_end(c, 2, true));
-    // The block slid or was pressed: the comparison is not between zeros.
-    double max_speed = 0.0;
-    for (double v : one.find("velocity")->real) max_speed = std::max(max_speed, std::abs(v));
-    MESSAGE(file << ": largest velocity component " << max_speed << " m/s");
-    CHECK(max_speed > 1e-3);
+    // The bodies are stressed by the block's weight (about 1 kPa under it):
+    // the comparison is not between zeros.
+    double max_stress = 0.0;
+    for (double v : one.find("stress")->real) max_stress = std::max(max_stress, std::abs(v));
+    MESSAGE(file << ": largest stress component " << max_stress << " Pa");
+    CHECK(max_stress > 100.0);
   }
 }
 TEST_CASE("an imperfect interface: 1 thread, 2 threads and the serial step agree bit for bit") {
