@@ -1,6 +1,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include <spdlog/spdlog.h>
@@ -108,6 +109,30 @@ void warn_thin_contact_bodies(spdlog::logger& log, const Case& c, const Discrete
   }
 }
 
+// Warns of every box body whose extent along an axis is not a whole number
+// of particle spacings: the lattice fills as many whole spacings as fit,
+// centred in the box (discretisation/bodies/lattice.hpp), so each of the
+// box's faces on that axis lies inside its particles' domain by half the
+// remainder. A slab 4.5 spacings thick left its top h/8 below the block on
+// it, and the block slid 7.2 % short (docs/guide/contact.md).
+template <int D>
+void warn_box_not_whole_spacings(spdlog::logger& log, const Case& c) {
+  for (const BodySpec& body : c.system.bodies) {
+    const auto* box = std::get_if<BoxShape>(&body.shape.shape);
+    if (!box || body.particles) continue;
+    for (int d = 0; d < D; ++d) {
+      const double extent = box->max[d] - box->min[d], spacings = extent / body.spacing[d];
+      const double whole = std::floor(spacings + 1e-9);
+      if (spacings - whole < 1e-6) continue;
+      log.warn("body '{}': its box is {:.4g} particle spacings along {} ({} m at {} m): its particles fill {:g}, "
+               "centred, so its faces along {} lie {} m inside the box's; make the box a whole number of spacings "
+               "(docs/guide/contact.md)",
+               body.name, spacings, "xyz"[d], readable_text(extent), readable_text(body.spacing[d]), whole, "xyz"[d],
+               readable_text(0.5 * (extent - whole * body.spacing[d])));
+    }
+  }
+}
+
 template <int D, class Shape>
 void log_system(spdlog::logger& log, const Case& c, const Simulation<D, Shape>& sim) {
   const Scheme& scheme = *c.scheme;
@@ -119,6 +144,7 @@ void log_system(spdlog::logger& log, const Case& c, const Simulation<D, Shape>& 
                ? " (FLIP fraction " + std::to_string(system.flip_fraction) + ")"
            : c.system.velocity_update == VelocityUpdate::xpic ? " (order " + std::to_string(system.xpic_order) + ")"
                                                                : "");
+  warn_box_not_whole_spacings<D>(log, c);
   std::string cells;
   for (int d = 0; d < D; ++d) cells += (d ? " x " : "") + std::to_string(system.grid.cells[d]);
   log.info("grid: {} cells, {} nodes, {} blocks of {}^{} cells ({} occupied)", cells,

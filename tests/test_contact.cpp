@@ -737,3 +737,26 @@ TEST_CASE("check warns of a body in contact thinner than 3 cells, naming it, its
   CHECK_FALSE(testing::contains(coarse, "body 'floor' is"));  // rigid: its thickness does not matter
   CHECK_FALSE(testing::contains(check("0.0333333333333", "[92, 9]"), "cells thick"));
 }
+
+TEST_CASE("check warns of a box body that is not a whole number of particle spacings, naming its faces' shift") {
+  // The slab of incline_block_slab.toml made 0.045 m thick at 20 mm cells
+  // (2 particles per cell, spacing 0.01 m): 4.5 spacings, filled with 4
+  // rows centred in the box, so its top lies 2.5 mm below y = 0, under the
+  // block, which then slid 7.2 % short (docs/validation/contact.md). The
+  // shipped case, 0.03 m at 10 mm cells (6 spacings), does not warn.
+  testing::TempDir dir("flowmpm_box_spacings");
+  auto check = [&](const std::vector<std::string>& overrides) {
+    std::vector<std::string> args = {"check", testing::config("contact/incline_block_slab.toml").string()};
+    for (const std::string& o : overrides) args.insert(args.end(), {"--set", o});
+    const testing::Result r = testing::run_flowmpm(args, dir.path);
+    CHECK_MESSAGE(r.status == 0, r.output);
+    return r.output;
+  };
+  const std::string thin = check({"grid.cell_size=0.02", "grid.cells=[154, 10]", "grid.origin=[-0.02, -0.045]",
+                                  "bodies[1].min=[-0.01, -0.045]", "bodies[2].min=[0.0, -0.045]",
+                                  "bodies[3].min=[0.2, -0.045]", "node_sets[0].at=-0.045"});
+  CHECK(testing::contains(thin, "body 'slab_under': its box is 4.5 particle spacings along y (0.045 m at 0.01 m): its "
+                                "particles fill 4, centred, so its faces along y lie 0.0025 m inside the box's"));
+  CHECK_FALSE(testing::contains(thin, "body 'block': its box"));  // 0.2 x 0.1 m: 20 x 10 spacings
+  CHECK_FALSE(testing::contains(check({}), "particle spacings"));
+}
