@@ -65,7 +65,7 @@ void log_crack_bands(spdlog::logger& log, const Case& c, double cell_volume) {
 // A deformable body in contact thinner than this many cells can stick or
 // slide short where a surface falls between node planes: a block on a
 // rigid incline (docs/guide/contact.md) slides within 0.3 % at 3 cells
-// through its thickness and every offset, 27 % short at 2.5 and stuck at 2
+// through its thickness and every offset, 14 % short at 2.5 and stuck at 2
 // with the surface mid-cell.
 constexpr double min_contact_cells = 3.0;
 
@@ -102,7 +102,7 @@ void warn_thin_contact_bodies(spdlog::logger& log, const Case& c, const Discrete
                                                : "contact group '" + c.system.contact_groups[m - bodies.size()] + "'";
     log.warn("{} is {:.2g} cells thick ({} m, the smallest extent of its particles) and in contact: below {:g} "
              "cells a body can stick or slide short where a surface falls between node planes (a block on an "
-             "incline, surface mid-cell: 27 % short at 2.5 cells, stuck at 2); cells of {} m or less give it {:g} "
+             "incline, surface mid-cell: 14 % short at 2.5 cells, stuck at 2); cells of {} m or less give it {:g} "
              "(docs/guide/contact.md)",
              name, thickness / h, readable_text(thickness), min_contact_cells,
              readable_text(thickness / min_contact_cells), min_contact_cells);

@@ -718,7 +718,7 @@ TEST_CASE("bad contact input is rejected with the file, line and key") {
 
 TEST_CASE("check warns of a body in contact thinner than 3 cells, naming it, its thickness and the minimum") {
   // The block of incline_block_rigid.toml is 0.1 m thick: 2.5 cells of
-  // 40 mm, where it slides 27 % short with the plane's surface mid-cell,
+  // 40 mm, where it slides 14 % short with the plane's surface mid-cell,
   // and 3 of 33.3 mm, where it slides within 0.3 % at every offset
   // (docs/guide/contact.md).
   testing::TempDir dir("flowmpm_thin_contact");
