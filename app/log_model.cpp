@@ -8,6 +8,7 @@
 
 #include "app/run_case_internal.hpp"
 #include "core/number_text.hpp"
+#include "discretisation/bodies/lattice.hpp"
 #include "discretisation/shapes/shape_functions.hpp"
 #include "engine/simulation.hpp"
 #include "io/case/memory_estimate.hpp"
@@ -120,15 +121,16 @@ void warn_box_not_whole_spacings(spdlog::logger& log, const Case& c) {
   for (const BodySpec& body : c.system.bodies) {
     const auto* box = std::get_if<BoxShape>(&body.shape.shape);
     if (!box || body.particles) continue;
+    const Lattice lattice(*box, body.spacing, D);
     for (int d = 0; d < D; ++d) {
-      const double extent = box->max[d] - box->min[d], spacings = extent / body.spacing[d];
-      const double whole = std::floor(spacings + 1e-9);
-      if (spacings - whole < 1e-6) continue;
-      log.warn("body '{}': its box is {:.4g} particle spacings along {} ({} m at {} m): its particles fill {:g}, "
+      const double margin = lattice.corner[d] - box->min[d];  // half the remainder
+      if (2.0 * margin < 1e-6 * body.spacing[d]) continue;
+      const double extent = box->max[d] - box->min[d];
+      log.warn("body '{}': its box is {:.4g} particle spacings along {} ({} m at {} m): its particles fill {}, "
                "centred, so its faces along {} lie {} m inside the box's; make the box a whole number of spacings "
                "(docs/guide/contact.md)",
-               body.name, spacings, "xyz"[d], readable_text(extent), readable_text(body.spacing[d]), whole, "xyz"[d],
-               readable_text(0.5 * (extent - whole * body.spacing[d])));
+               body.name, extent / body.spacing[d], "xyz"[d], readable_text(extent), readable_text(body.spacing[d]),
+               lattice.count[d], "xyz"[d], readable_text(margin));
     }
   }
 }
