@@ -118,9 +118,11 @@ TEST_CASE("contact on a coarse grid, the surface between node planes: 1 thread, 
       {"contact/incline_block_rigid.toml",
        {"grid.cell_size=0.02", "grid.cells=[154, 9]", "grid.origin=[-0.02, -0.055]", "contacts[0].friction=0.2",
         "analysis.end_time=0.05"}},
+      // The slab 3 cells thick (whole particle spacings), held 2.75 cells
+      // below its surface, as in test_contact.cpp.
       {"contact/incline_block_slab.toml",
-       {"grid.cell_size=0.02", "grid.cells=[154, 10]", "grid.origin=[-0.02, -0.055]", "bodies[1].min=[-0.01, -0.055]",
-        "bodies[2].min=[0.0, -0.055]", "bodies[3].min=[0.2, -0.055]", "node_sets[0].at=-0.055",
+       {"grid.cell_size=0.02", "grid.cells=[154, 15]", "grid.origin=[-0.02, -0.095]", "bodies[1].min=[-0.01, -0.06]",
+        "bodies[2].min=[0.0, -0.06]", "bodies[3].min=[0.2, -0.06]", "node_sets[0].at=-0.055",
         "contacts[0].friction=0.7", "analysis.end_time=0.05"}}};
   // The cases' time step is automatic (from the particles' largest speed,
   // a max, the same in any order): stepped to their end time.
