@@ -277,7 +277,8 @@ TEST_CASE("a disk on the rigid incline slips as a block below mu = tan(30) / 3, 
 // 0, 1/4 and 1/2 of a cell above a node plane, at 20 and 10 mm cells (the
 // disk 10 and 20 cells across): measured within 3e-4 of the closed form.
 // Not asserted, and in docs/validation/contact.md: at 3/4 (its lowest
-// particle row on a node plane) it is 8.4 % and 5.9 % off, and rolling
+// particle row on a node plane, where the case's touch fraction of 1 is
+// not reached under the disk) it is 8.4 % and 5.9 % off, and rolling
 // (mu = 0.3) at 20 mm is 6.7 to 7.7 % short at every offset.
 TEST_CASE("incline: the disk slips within 5 % on a coarse grid with the surface between node planes") {
   const std::string file = "contact/incline_disk_rigid.toml";
