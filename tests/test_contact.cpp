@@ -264,8 +264,8 @@ TEST_CASE("incline: a block on a deformable slab slides and sticks as on the rig
 
 TEST_CASE("a disk on the rigid incline slips as a block below mu = tan(30) / 3, and rolls above it") {
   // Slipping (mu = 0.1, 10 mm cells): 2 %, as the block. Rolling (mu = 0.3,
-  // 5 mm cells, the case file): the centre moves 2.0 % less than
-  // g sin t^2 / 3 (3.75 % at 10 mm): each node the disk rolls onto loses its
+  // 5 mm cells, the case file): the centre moves 1.9 % less than
+  // g sin t^2 / 3 (3.1 % at 10 mm): each node the disk rolls onto loses its
   // approach, a rolling resistance of the nodal contact
   // (docs/validation/contact.md); the issue asks 3 %.
   const std::string file = "contact/incline_disk_rigid.toml";
@@ -273,27 +273,37 @@ TEST_CASE("a disk on the rigid incline slips as a block below mu = tan(30) / 3, 
   CHECK(incline_error(file, {}) < 0.03);
 }
 
-// The disk slipping (mu = 0.1) on a coarse grid with the plane's surface
-// 0, 1/4 and 1/2 of a cell above a node plane, at 20 and 10 mm cells (the
-// disk 10 and 20 cells across): measured within 3e-4 of the closed form.
-// Not asserted, and in docs/validation/contact.md: at 3/4 (its lowest
-// particle row on a node plane, where the case's touch fraction of 1 is
-// not reached under the disk) it is 8.4 % and 5.9 % off, and rolling
-// (mu = 0.3) at 20 mm is 6.7 to 7.7 % short at every offset.
-TEST_CASE("incline: the disk slips within 5 % on a coarse grid with the surface between node planes") {
+// The disk on a coarse grid with the plane's surface 0, 1/4, 1/2 and 3/4
+// of a cell above a node plane, at 20 and 10 mm cells (the disk 10 and 20
+// cells across), touch fraction 0.99 (the case's). Slipping (mu = 0.1):
+// measured within 3.6e-4 at 0, 1/4 and 1/2, and at 3/4 (its lowest
+// particle row on a node plane) 2.3 % at 10 mm, with the balance 0.18 off
+// (the nodes under the row carry a sliver of the disk). Rolling (mu = 0.3)
+// at 10 mm: 3.1 / 2.4 / 4.2 / 0.6 %, the nodal contact's rolling
+// resistance. Not asserted, and in docs/validation/contact.md: at 20 mm
+// the slip at 3/4 (6.1 %) and the rolling at 0, 1/4 and 1/2 (6.5-7.9 %);
+// NairnMPM misses 5 % there too.
+TEST_CASE("incline: the disk slips and rolls within 5 % on a coarse grid with the surface between node planes") {
   const std::string file = "contact/incline_disk_rigid.toml";
+  auto overrides = [](double h, double offset, const char* friction) {
+    return std::vector<std::string>{"grid.cell_size=" + std::to_string(h),
+                                    h == 0.02 ? "grid.cells=[151, 16]" : "grid.cells=[301, 31]",
+                                    "grid.origin=[-0.02, " + std::to_string(-(0.04 + offset * h)) + "]",
+                                    std::string("contacts[0].friction=") + friction};
+  };
   for (const double h : {0.02, 0.01}) {
-    for (const double offset : {0.0, 0.25, 0.5}) {
+    for (const double offset : {0.0, 0.25, 0.5, 0.75}) {
+      if (h == 0.02 && offset == 0.75) continue;
       CAPTURE(h);
       CAPTURE(offset);
-      const std::vector<std::string> o = {"grid.cell_size=" + std::to_string(h),
-                                          h == 0.02 ? "grid.cells=[151, 16]" : "grid.cells=[301, 31]",
-                                          "grid.origin=[-0.02, " + std::to_string(-(0.04 + offset * h)) + "]",
-                                          "contacts[0].friction=0.1"};
       double energy_error = 1.0;
-      CHECK(incline_error(file, o, nullptr, &energy_error) < 0.05);
-      CHECK(energy_error < 0.05);  // measured at most 0.019
+      CHECK(incline_error(file, overrides(h, offset, "0.1"), nullptr, &energy_error) < 0.05);
+      if (offset != 0.75) CHECK(energy_error < 0.05);  // measured at most 0.020
     }
+  }
+  for (const double offset : {0.0, 0.25, 0.5, 0.75}) {
+    CAPTURE(offset);
+    CHECK(incline_error(file, overrides(0.01, offset, "0.3")) < 0.05);
   }
 }
 
@@ -492,9 +502,9 @@ TEST_CASE("two fields under the stick law move as one field: Sulsky's disks, USL
 }
 
 TEST_CASE("a 3D block dropped on a rigid floor bounces off it, and the energy balance closes") {
-  // MUSL, half the held case's time step, touch fraction 1 (the case file
-  // says why). Without friction and with mu = 0.3 (the block's corners
-  // grip): measured 2.6 % of the largest energy present both
+  // MUSL, half the held case's time step, touch fraction 0.99 (the case
+  // file says why). Without friction and with mu = 0.3 (the block's corners
+  // grip): measured 2.8 % of the largest energy present both
   // (docs/validation/contact.md); the issue asks 5 %.
   for (const bool friction : {false, true}) {
     CAPTURE(friction);
@@ -515,13 +525,13 @@ TEST_CASE("a 3D block dropped on a rigid floor bounces off it, and the energy ba
     const RunSummary r = testing::run(c);
     MESSAGE("3D drop on a rigid floor: largest upward velocity " << highest_rise << " m/s (impact at 1.4 m/s), "
             << "energy balance error " << r.energy_error << ", contact work " << *r.contact_work << " J");
-    CHECK(highest_rise > 0.5);  // measured 1.14 and 1.15 m/s; held, the block stays on the plane
+    CHECK(highest_rise > 0.5);  // measured 1.14 and 1.13 m/s; held, the block stays on the plane
     CHECK(r.energy_error < 0.05);
     if (friction) {
       CHECK(*r.contact_work < 0.0);  // friction on a floor at rest only takes energy out
     } else {
       // A frictionless floor at rest does no work on the block; what the
-      // nodal impacts count is the discretisation's (measured +0.090 J).
+      // nodal impacts count is the discretisation's (measured +0.12 J).
       CHECK(std::abs(*r.contact_work) < 0.01 * r.gravity_work);
     }
   }
