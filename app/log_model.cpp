@@ -63,15 +63,11 @@ void log_crack_bands(spdlog::logger& log, const Case& c, double cell_volume) {
   }
 }
 
-// A deformable body in contact thinner than this many cells can stick or
-// slide short where a surface falls between node planes: a block on a
-// rigid incline (docs/guide/contact.md) slides within 0.3 % at 3 cells
-// through its thickness and every offset, 14 % short at 2.5 and stuck at 2
-// with the surface mid-cell.
-constexpr double min_contact_cells = 3.0;
-
 // Warns of each deformable body (or contact group: its bodies together) of
-// a [[contacts]] pair thinner than min_contact_cells: its thickness is the
+// a [[contacts]] pair thinner than the shape function's min_contact_cells,
+// below which a body can stick or slide short where a surface falls
+// between node planes (a block on a rigid incline, docs/guide/contact.md;
+// the wider shape functions need more cells): its thickness is the
 // smallest extent of its particles' box (a bounding box: a thin arm of an
 // irregular body goes unseen).
 template <int D, class Shape>
@@ -95,6 +91,7 @@ void warn_thin_contact_bodies(spdlog::logger& log, const Case& c, const Discrete
       low[m] = low[m].cwiseMin(b.x[p] - half), high[m] = high[m].cwiseMax(b.x[p] + half);
   }
   const double h = system.grid.h.minCoeff();
+  constexpr double min_contact_cells = Shape::min_contact_cells;
   for (std::size_t m = 0; m < members; ++m) {
     if (!in_contact[m] || !(low[m].array() < inf).all()) continue;
     const double thickness = (high[m] - low[m]).minCoeff();
@@ -102,10 +99,10 @@ void warn_thin_contact_bodies(spdlog::logger& log, const Case& c, const Discrete
     const std::string name = m < bodies.size() ? "body '" + bodies[m].name + "'"
                                                : "contact group '" + c.system.contact_groups[m - bodies.size()] + "'";
     log.warn("{} is {:.2g} cells thick ({} m, the smallest extent of its particles) and in contact: below {:g} "
-             "cells a body can stick or slide short where a surface falls between node planes (a block on an "
-             "incline, surface mid-cell: 14 % short at 2.5 cells, stuck at 2); cells of {} m or less give it {:g} "
-             "(docs/guide/contact.md)",
-             name, thickness / h, readable_text(thickness), min_contact_cells,
+             "cells with {} shape functions a body can stick or slide short where a surface falls between node "
+             "planes (a block on a rigid incline: docs/guide/contact.md has the table); cells of {} m or less "
+             "give it {:g}",
+             name, thickness / h, readable_text(thickness), min_contact_cells, Shape::name,
              readable_text(thickness / min_contact_cells), min_contact_cells);
   }
 }

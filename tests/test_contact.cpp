@@ -732,26 +732,33 @@ TEST_CASE("bad contact input is rejected with the file, line and key") {
   }
 }
 
-TEST_CASE("check warns of a body in contact thinner than 3 cells, naming it, its thickness and the minimum") {
-  // The block of incline_block_rigid.toml is 0.1 m thick: 2.5 cells of
-  // 40 mm, where it slides 14 % short with the plane's surface mid-cell,
-  // and 3 of 33.3 mm, where it slides within 0.3 % at every offset
-  // (docs/guide/contact.md).
+TEST_CASE("check warns of a body in contact thinner than its shape function's minimum, naming it, its thickness and the minimum") {
+  // The block of incline_block_rigid.toml is 0.1 m thick: with linear
+  // shape functions 2.5 cells of 40 mm, where it slides 14 % short with
+  // the plane's surface mid-cell, and 3 of 33.3 mm, where it slides within
+  // 0.3 % at every offset; with uGIMP 5 cells of 20 mm, up to 21 % short,
+  // and 10 of 10 mm, within 0.01 % (docs/guide/contact.md).
   testing::TempDir dir("flowmpm_thin_contact");
-  auto check = [&](const std::string& cell, const std::string& cells) {
+  auto check = [&](const std::string& cell, const std::string& cells, const std::string& shape = "linear") {
     const testing::Result r = testing::run_flowmpm(
         {"check", testing::config("contact/incline_block_rigid.toml").string(), "--set", "grid.cell_size=" + cell,
-         "--set", "grid.cells=" + cells, "--set", "grid.origin=[-0.04, -0.08]", "--set", "bodies[1].min=[-0.01, -0.05]"},
+         "--set", "grid.cells=" + cells, "--set", "grid.origin=[-0.04, -0.08]", "--set", "bodies[1].min=[-0.01, -0.05]",
+         "--set", "analysis.shape_function=" + shape},
         dir.path);
     CHECK_MESSAGE(r.status == 0, r.output);
     return r.output;
   };
   const std::string coarse = check("0.04", "[77, 8]");
   CHECK(testing::contains(coarse, "body 'block' is 2.5 cells thick (0.1 m, the smallest extent of its particles) "
-                                  "and in contact: below 3 cells"));
+                                  "and in contact: below 3 cells with linear shape functions"));
   CHECK(testing::contains(coarse, "cells of 0.0333333 m or less give it 3"));
   CHECK_FALSE(testing::contains(coarse, "body 'floor' is"));  // rigid: its thickness does not matter
   CHECK_FALSE(testing::contains(check("0.0333333333333", "[92, 9]"), "cells thick"));
+  const std::string wide = check("0.02", "[154, 15]", "gimp");
+  CHECK(testing::contains(wide, "body 'block' is 5 cells thick (0.1 m, the smallest extent of its particles) "
+                                "and in contact: below 10 cells with gimp shape functions"));
+  CHECK(testing::contains(wide, "cells of 0.01 m or less give it 10"));
+  CHECK_FALSE(testing::contains(check("0.01", "[308, 30]", "gimp"), "cells thick"));
 }
 
 TEST_CASE("check warns of a box body that is not a whole number of particle spacings, naming its faces' shift") {
