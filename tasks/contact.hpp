@@ -108,6 +108,23 @@ void contact_volumes(DiscreteSystem<D, Shape>& system) {
     };
     bonded ? scatter.template operator()<true>() : scatter.template operator()<false>();
   });
+  // A rigid body is at a node where it has volume there, and there the
+  // deformable body's velocity must keep to it. A particle on the edge of
+  // a stencil (on a node plane with linear shape functions, at a cell's
+  // centre with quadratic B-splines) gives the node a weight of rounding's
+  // size instead of 0 (1e-16; 1e-32 with a B-spline), and a rigid body
+  // with that much volume at a node deep inside the other body held it
+  // (docs/theory/contact.md): below 1e-9 of the node's volume it is none.
+  double node_volume = 1.0;
+  for (int d = 0; d < D; ++d) node_volume *= grid.h[d];
+  for (std::size_t k = contact.deformable.size(); k < contact.volume.size(); ++k) {
+    for_each_active_node(grid, [&](std::size_t n, const Index<D>&) {
+      if (contact.volume[k][n] >= ContactFields<D>::least_volume * node_volume) return;
+      contact.volume[k][n] = 0.0;
+      for (int d = 0; d < D; ++d) contact.volume_gradient[k][d][n] = 0.0;
+      for (auto& s : contact.spread[k].sum) s[n] = 0.0;
+    });
+  }
 }
 
 namespace detail {

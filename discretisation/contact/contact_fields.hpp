@@ -106,6 +106,9 @@ struct ContactFields {
   // particles' separating direction at which the gradient's is kept:
   // measured on the incline at four surface offsets (docs/validation/contact.md).
   static constexpr double normal_tolerance = 0.7853981633974483;  // 45 degrees
+  // The least volume of a rigid body at a node, as a fraction of the
+  // node's volume, that puts it there: less is a rounding's (tasks/contact.hpp).
+  static constexpr double least_volume = 1e-9;
   // Per deformable field k at [k - 1], the sums of its nodal displacement
   // (interface_displacement.hpp); empty for a field no interface bonds.
   std::vector<InterfaceDisplacement<D>> displacement;
