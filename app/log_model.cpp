@@ -9,6 +9,7 @@
 #include "app/run_case_internal.hpp"
 #include "core/number_text.hpp"
 #include "discretisation/bodies/lattice.hpp"
+#include "discretisation/contact/contact_fields.hpp"
 #include "discretisation/shapes/shape_functions.hpp"
 #include "engine/simulation.hpp"
 #include "io/case/memory_estimate.hpp"
@@ -63,13 +64,13 @@ void log_crack_bands(spdlog::logger& log, const Case& c, double cell_volume) {
   }
 }
 
-// Warns of each deformable body (or contact group: its bodies together) of
-// a [[contacts]] pair thinner than the shape function's min_contact_cells,
-// below which a body can stick or slide short where a surface falls
-// between node planes (a block on a rigid incline, docs/guide/contact.md;
-// the wider shape functions need more cells): its thickness is the
-// smallest extent of its particles' box (a bounding box: a thin arm of an
-// irregular body goes unseen).
+// Warns of each body (or contact group: its bodies together) of a
+// [[contacts]] pair, rigid ones included, thinner than
+// ContactFields::min_body_cells, below which a body on it or on which it
+// rests can stick or slide short where a surface falls between node planes
+// (a block on a rigid floor 1 to 2 cells thick, docs/guide/contact.md):
+// its thickness is the smallest extent of its particles' box (a bounding
+// box: a thin arm of an irregular body goes unseen).
 template <int D, class Shape>
 void warn_thin_contact_bodies(spdlog::logger& log, const Case& c, const DiscreteSystem<D, Shape>& system) {
   const std::vector<BodySpec>& bodies = c.system.bodies;
@@ -85,25 +86,24 @@ void warn_thin_contact_bodies(spdlog::logger& log, const Case& c, const Discrete
   std::vector<Vec<D>> low(members, Vec<D>::Constant(inf)), high(members, Vec<D>::Constant(-inf));
   for (const auto& b : system.batches) {
     const int m = member(b.body);
-    if (!in_contact[m] || bodies[b.body].rigid()) continue;
+    if (!in_contact[m]) continue;
     const Vec<D> half = Vec<D>::Constant(0.5 * b.particle_length);
     for (std::size_t p = 0; p < b.size(); ++p)
       low[m] = low[m].cwiseMin(b.x[p] - half), high[m] = high[m].cwiseMax(b.x[p] + half);
   }
   const double h = system.grid.h.minCoeff();
-  constexpr double min_contact_cells = Shape::min_contact_cells;
+  constexpr double min_cells = ContactFields<D>::min_body_cells;
   for (std::size_t m = 0; m < members; ++m) {
     if (!in_contact[m] || !(low[m].array() < inf).all()) continue;
     const double thickness = (high[m] - low[m]).minCoeff();
-    if (thickness >= min_contact_cells * h * (1.0 - 1e-9)) continue;
+    if (thickness >= min_cells * h * (1.0 - 1e-9)) continue;
     const std::string name = m < bodies.size() ? "body '" + bodies[m].name + "'"
                                                : "contact group '" + c.system.contact_groups[m - bodies.size()] + "'";
     log.warn("{} is {:.2g} cells thick ({} m, the smallest extent of its particles) and in contact: below {:g} "
-             "cells with {} shape functions a body can stick or slide short where a surface falls between node "
-             "planes (a block on a rigid incline: docs/guide/contact.md has the table); cells of {} m or less "
+             "cells a body, or one it supports, can stick or slide short where a surface falls between node "
+             "planes (a block on a rigid floor: docs/guide/contact.md has the table); cells of {} m or less "
              "give it {:g}",
-             name, thickness / h, readable_text(thickness), min_contact_cells, Shape::name,
-             readable_text(thickness / min_contact_cells), min_contact_cells);
+             name, thickness / h, readable_text(thickness), min_cells, readable_text(thickness / min_cells), min_cells);
   }
 }
 

@@ -568,31 +568,33 @@ TEST_CASE("a 3D block dropped on a rigid floor bounces off it, and the energy ba
 // of a cell above a node plane. Long-wave theory for a free-sided block
 // landing flat at v0 (a rod of the plate modulus E / (1 - nu^2), c =
 // 33.15 m/s): it stops when the wave has crossed it once, its centre
-// lowered by H v0 / (2 c) = 6.34 mm, at 0.1437 m. Measured 0.1425-0.1445
-// m at every cell and offset (within 0.7 mm at 15 mm); 2 mm, a third of
+// lowered by H v0 / (2 c) = 6.34 mm, at 0.1437 m. Measured 0.1423-0.1445
+// m at every cell and offset (within 0.6 mm at 15 mm); 2 mm, a third of
 // the compression, separates this from a block stopped short of the floor
 // (0.167 m with a touch fraction of 0.6 in 3D) or sinking into it. It
 // rebounds at 0.62-0.79 of v0: what a square block keeps from the impact
 // as vibration is not in the long-wave theory (which rebounds at v0), and
 // a block held by the floor rebounds at 0. The energy balance: measured
-// at most 0.034 at offsets 0, 1/4, 1/2; at 3/4 the block's lowest particle
-// row lands on a node plane and the nodes a cell below, inside the floor,
-// carry a sliver of its mass with the whole force of its stress: the
-// impact gains energy, 0.100, 0.048 and 0.024 of the largest present at
-// 60, 30 and 15 mm, halving with the cell (docs/validation/contact.md).
+// at most 0.034 at offsets 0, 1/4, 1/2, where the floor's work is at most
+// 0.04 J of about 40-60 J. At 3/4 the block's lowest particle row lands on
+// a node plane and the nodes a cell below, inside the floor, carry a
+// sliver of its mass with the whole force of its stress: the impact gains
+// energy, 0.087, 0.032 and 0.156 of the largest present at 60, 30 and
+// 15 mm (7.6, 2.7, 10.7 J); how much depends on which side of the node
+// plane rounding puts the row (at 15 mm 1.4 J with the grid 0.06 m
+// higher), so it is bounded, not converged (docs/validation/contact.md).
 TEST_CASE("a 2D block dropped on a rigid floor lands and rebounds alike wherever the floor's surface falls in a cell") {
   const double v0 = std::sqrt(2.0 * 9.81 * 0.1), c_plate = std::sqrt(1e6 / ((1.0 - 0.09) * 1000.0));
   const double lowest_centre = 0.15 - 0.3 * v0 / (2.0 * c_plate);
   for (const double offset : {0.0, 0.25, 0.5, 0.75}) {
-    std::vector<double> contact_work_at_three_quarters;
     for (const double h : {0.06, 0.03, 0.015}) {
       CAPTURE(offset);
       CAPTURE(h);
       const std::vector<std::string> grid = {
           "grid.cell_size=" + std::to_string(h),
           "grid.cells=[" + std::to_string(static_cast<int>(std::ceil(0.87 / h)) + 1) + ", " +
-              std::to_string(static_cast<int>(std::ceil((0.78 + h) / h))) + "]",
-          "grid.origin=[-0.21, " + std::to_string(-0.18 - offset * h) + "]"};
+              std::to_string(static_cast<int>(std::ceil((0.84 + h) / h))) + "]",
+          "grid.origin=[-0.21, " + std::to_string(-0.24 - offset * h) + "]"};
       const Case c = read_case(testing::config("contact/drop_rigid_floor.toml"), grid);
       auto sim = testing::simulation<2, LinearShape>(c);
       SystemScalars& s = sim.scalars();
@@ -618,16 +620,11 @@ TEST_CASE("a 2D block dropped on a rigid floor lands and rebounds alike wherever
       CHECK(std::abs(lowest - lowest_centre) < 0.002);
       CHECK(rebound > 0.6 * -impact);
       if (offset == 0.75) {
-        contact_work_at_three_quarters.push_back(*r.contact_work);
-        CHECK(r.energy_error < (h == 0.06 ? 0.1 : 0.05));
+        CHECK(r.energy_error < 0.2);  // the sliver's gain (above)
       } else {
         CHECK(std::abs(*r.contact_work) < 0.01 * r.gravity_work);  // a frictionless floor at rest does no work
         CHECK(r.energy_error < 0.05);
       }
-    }
-    if (offset == 0.75) {  // the sliver's work falls with the cell
-      CHECK(contact_work_at_three_quarters[1] < 0.67 * contact_work_at_three_quarters[0]);
-      CHECK(contact_work_at_three_quarters[2] < 0.67 * contact_work_at_three_quarters[1]);
     }
   }
 }
@@ -827,33 +824,39 @@ TEST_CASE("bad contact input is rejected with the file, line and key") {
   }
 }
 
-TEST_CASE("check warns of a body in contact thinner than its shape function's minimum, naming it, its thickness and the minimum") {
-  // The block of incline_block_rigid.toml is 0.1 m thick: with linear
-  // shape functions 2.5 cells of 40 mm, where it slides 14 % short with
-  // the plane's surface mid-cell, and 3 of 33.3 mm, where it slides within
-  // 0.3 % at every offset; with uGIMP 5 cells of 20 mm, up to 21 % short,
-  // and 10 of 10 mm, within 0.01 % (docs/guide/contact.md).
+TEST_CASE("check warns of a body in contact thinner than 3 cells, rigid ones too, naming it, its thickness and the minimum") {
+  // The block of incline_block_rigid.toml is 0.1 m thick. On a floor 3
+  // cells thick or more, a block 2 to 5 cells thick slid within 1.4 % at
+  // every surface offset with every shape function; under a 5-cell block a
+  // floor 1, 1.5 or 2 cells thick left it up to 18, 22, 31 % short (linear,
+  // uGIMP, cubic B-splines: docs/guide/contact.md). Here the floor is 0.12
+  // m thick unless given.
   testing::TempDir dir("flowmpm_thin_contact");
-  auto check = [&](const std::string& cell, const std::string& cells, const std::string& shape = "linear") {
+  auto check = [&](const std::string& cell, const std::string& cells, const std::string& shape = "linear",
+                   const std::string& floor_bottom = "-0.12") {
     const testing::Result r = testing::run_flowmpm(
         {"check", testing::config("contact/incline_block_rigid.toml").string(), "--set", "grid.cell_size=" + cell,
-         "--set", "grid.cells=" + cells, "--set", "grid.origin=[-0.04, -0.08]", "--set", "bodies[1].min=[-0.01, -0.05]",
-         "--set", "analysis.shape_function=" + shape},
+         "--set", "grid.cells=" + cells, "--set", "grid.origin=[-0.04, -0.16]", "--set",
+         "bodies[1].min=[-0.01, " + floor_bottom + "]", "--set", "analysis.shape_function=" + shape},
         dir.path);
     CHECK_MESSAGE(r.status == 0, r.output);
     return r.output;
   };
-  const std::string coarse = check("0.04", "[77, 8]");
+  const std::string coarse = check("0.04", "[77, 10]");
   CHECK(testing::contains(coarse, "body 'block' is 2.5 cells thick (0.1 m, the smallest extent of its particles) "
-                                  "and in contact: below 3 cells with linear shape functions"));
+                                  "and in contact: below 3 cells a body, or one it supports, can stick"));
   CHECK(testing::contains(coarse, "cells of 0.0333333 m or less give it 3"));
-  CHECK_FALSE(testing::contains(coarse, "body 'floor' is"));  // rigid: its thickness does not matter
-  CHECK_FALSE(testing::contains(check("0.0333333333333", "[92, 9]"), "cells thick"));
-  const std::string wide = check("0.02", "[154, 15]", "gimp");
-  CHECK(testing::contains(wide, "body 'block' is 5 cells thick (0.1 m, the smallest extent of its particles) "
-                                "and in contact: below 10 cells with gimp shape functions"));
-  CHECK(testing::contains(wide, "cells of 0.01 m or less give it 10"));
-  CHECK_FALSE(testing::contains(check("0.01", "[308, 30]", "gimp"), "cells thick"));
+  CHECK_FALSE(testing::contains(coarse, "body 'floor' is"));  // 3 cells
+  CHECK_FALSE(testing::contains(check("0.0333333333333", "[92, 12]"), "cells thick"));
+  // The shipped floor (0.03 m) at 20 mm: 1.5 cells, rigid, warned; the
+  // block, 5 cells, not, whatever the shape function.
+  for (const char* shape : {"linear", "gimp", "bspline3"}) {
+    CAPTURE(shape);
+    const std::string thin_floor = check("0.02", "[154, 18]", shape, "-0.03");
+    CHECK(testing::contains(thin_floor, "body 'floor' is 1.5 cells thick (0.03 m"));
+    CHECK_FALSE(testing::contains(thin_floor, "body 'block' is"));
+    CHECK_FALSE(testing::contains(check("0.02", "[154, 18]", shape), "cells thick"));
+  }
 }
 
 TEST_CASE("check warns of a box body that is not a whole number of particle spacings, naming its faces' shift") {

@@ -109,6 +109,12 @@ struct ContactFields {
   // The least volume of a rigid body at a node, as a fraction of the
   // node's volume, that puts it there: less is a rounding's (tasks/contact.hpp).
   static constexpr double least_volume = 1e-9;
+  // The thinnest body in contact, in cells, whose contact is trusted, with
+  // every shape function (app/log_model.cpp warns below it): a block on a
+  // rigid incline slid within 2.3 % on a floor 3 cells thick and more at
+  // every surface offset, and up to 42 % short on one 1 to 2 cells thick
+  // (docs/guide/contact.md).
+  static constexpr double min_body_cells = 3.0;
   // Per deformable field k at [k - 1], the sums of its nodal displacement
   // (interface_displacement.hpp); empty for a field no interface bonds.
   std::vector<InterfaceDisplacement<D>> displacement;

@@ -21,10 +21,6 @@ struct QuadraticBSpline {
   // APIC: D_p = sum_I N_Ip (x_I - x_p)(x_I - x_p)^T = h^2 / 4 I wherever the
   // particle is [Jiang 2015] (docs/theory/transfers.md).
   static constexpr double apic_inertia = 0.25;
-  // The thinnest body, in cells, whose contact is trusted: a block on a
-  // rigid incline sticks at 5 cells, is up to 5.7 % short at 8 and 2.4 % at
-  // 10, at the worst of four surface offsets (docs/guide/contact.md).
-  static constexpr double min_contact_cells = 10.0;
   // Stable time step in h / c, 1 to 4 particles per cell (docs/STABILITY.md):
   // USL at a free surface; USF and MUSL as measured on the 2D column, lower
   // than the 2.3 of the bar (not explained).
@@ -52,10 +48,6 @@ struct CubicBSpline {
   static constexpr int reach_above = 2;
   static constexpr bool gradient_jumps = false;  // |dN|^2 / N bounded
   static constexpr double apic_inertia = 1.0 / 3.0;  // APIC: D_p = h^2 / 3 I
-  // The thinnest body, in cells, whose contact is trusted: a block on a
-  // rigid incline sticks at 5 cells, is up to 14 % short at 8 and 2.9 % at
-  // 10, at the worst of four surface offsets (docs/guide/contact.md).
-  static constexpr double min_contact_cells = 10.0;
   // Stable time step in h / c, 1 to 4 particles per cell (docs/STABILITY.md).
   static constexpr std::array<double, 4> stable_factor_usl{1.02, 1.09, 1.11, 1.11};
   static constexpr std::array<double, 4> stable_factor_remapped{0.90, 0.90, 0.90, 0.90};

@@ -6,8 +6,6 @@
 //   static constexpr double apic_inertia;  // APIC's D_p in h^2 where it is the same for every
 //                                          // particle (B-splines), 0 where it is not (linear, GIMP:
 //                                          // APIC takes the velocity gradient there)
-//   static constexpr double min_contact_cells;  // the thinnest body in contact, in cells,
-//                                          // whose result is trusted (the run log warns below)
 //   static constexpr std::array<double, 4> stable_factor_usl, stable_factor_remapped;
 //                                          // largest stable dt in h / c, 1 to 4 particles per cell
 //   static void stencil(double g, double inv_h, double half_width, int& base,

@@ -26,10 +26,6 @@ struct GimpShape {
   // APIC: D_p depends on where the particle is; C_p = sum v_I (x) grad N_Ip
   // instead (docs/theory/transfers.md).
   static constexpr double apic_inertia = 0.0;
-  // The thinnest body, in cells, whose contact is trusted: a block on a
-  // rigid incline is up to 21 % short at 5 cells, 5.1 % at 8 and within
-  // 0.01 % at 10, at the worst of four surface offsets (docs/guide/contact.md).
-  static constexpr double min_contact_cells = 10.0;
   // Stable time step in h / c, 1 to 4 particles per cell (docs/STABILITY.md):
   // USL at a free surface, where |dN|^2 / N = 2 ppc / h^2; USF and MUSL.
   static constexpr std::array<double, 4> stable_factor_usl{0.67, 0.63, 0.55, 0.49};

@@ -25,10 +25,6 @@ struct LinearShape {
   // APIC: grad N_Ip = D_p^-1 (x_I - x_p) N_Ip exactly, D_p singular on a node:
   // C_p = sum v_I (x) grad N_Ip [Jiang 2015] (docs/theory/transfers.md).
   static constexpr double apic_inertia = 0.0;
-  // The thinnest body, in cells, whose contact is trusted (app/log_model.cpp
-  // warns below it): a block on a rigid incline slides within 0.3 % at 3
-  // cells and every surface offset, 14 % short at 2.5 (docs/guide/contact.md).
-  static constexpr double min_contact_cells = 3.0;
   // The largest stable time step, in h / c, for 1 to 4 particles per cell
   // and axis (docs/STABILITY.md): with the stress from the updated grid
   // velocity (USL; the lattice allows 0.71-0.77, but at a moving free
