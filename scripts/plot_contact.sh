@@ -33,6 +33,10 @@
 #                           the pulled end's displacement, against Volkersen's
 #   contact_drop_3d.png     3D block on a rigid floor: centre height (and on a
 #                           wall) and the energy balance's terms
+#   contact_drop_2d.png     2D block on a rigid floor at 30 mm cells with the
+#                           floor's surface 0, 1/4, 1/2 and 3/4 of a cell
+#                           above a node plane: centre height, and near the
+#                           impact against long-wave theory's lowest centre
 # It also prints the Sulsky contact's measured duration and the Hertz
 # estimate (the numbers quoted in docs/validation/contact.md).
 # Needs Debian's python3 with h5py and numpy, and gnuplot (scripts/setup.sh).
@@ -71,6 +75,11 @@ run bars_32 "$bars" --set grid.cell_size=0.00625 --set "grid.cells=[208, 32]" --
   --set output.every=8 --set "$fields"
 run drop_3d "$configs/contact/drop_3d_rigid_floor.toml" --set output.every=10 --set "$fields"
 run drop_3d_wall "$configs/contact/drop_3d_wall.toml" --set output.every=10 --set "$fields"
+# The 2D drop at 30 mm cells, the floor's surface at four offsets in a cell.
+for offset in 0 0.25 0.5 0.75; do
+  run "drop_2d_$offset" "$configs/contact/drop_rigid_floor.toml" --set "grid.cells=[30, 29]" \
+    --set "grid.origin=[-0.21, $(awk "BEGIN { print -0.24 - $offset * 0.03 }")]" --set output.every=2 --set "$fields"
+done
 run lap_shear_0.5mm "$configs/contact/lap_shear_interface.toml" --set grid.cell_size=0.0005 --set "grid.cells=[62, 6]" \
   --set output.every=10 --set "$fields"
 run lap_shear_0.25mm "$configs/contact/lap_shear_interface.toml" --set output.every=20 --set "$fields"
@@ -201,6 +210,10 @@ np.savetxt(f"{out}/drop_3d.dat", np.column_stack([t, c[:, 1], ts["kinetic_energy
                                                    ts["gravity_work"], ts["contact_work"], ts["energy_balance_error"]]))
 t, c = centres("drop_3d_wall", deformable)
 np.savetxt(f"{out}/drop_3d_wall.dat", np.column_stack([t, c[:, 1]]))
+# (g): the 2D drop at four offsets.
+for offset in ["0", "0.25", "0.5", "0.75"]:
+    t, c = centres(f"drop_2d_{offset}", deformable)
+    np.savetxt(f"{out}/drop_2d_{offset}.dat", np.column_stack([t, c[:, 1]]))
 
 
 def ramp_displacement(t):
@@ -330,6 +343,31 @@ plot "$data/drop_3d.dat" using 1:3 with lines lw 2 lc 1 title "kinetic", \
      "" using 1:6 with lines lw 2 lc 4 title "contact work", \
      "" using 1:7 with lines lw 2 lc rgb "black" dt 2 title "balance error"
 unset multiplot
+
+set output "$png/contact_drop_2d.png"
+set multiplot layout 1,2 title "2D block (0.3 m square, plane strain) dropped on a rigid floor at 30 mm cells (drop_rigid_floor.toml)"
+set title "the block's centre of mass, the floor's surface at four offsets"
+set xlabel "time t (s)"
+set ylabel "centre height y (m)"
+set key top right
+set xrange [0:0.3]
+set yrange [0.13:0.26]
+plot "$data/drop_2d_0.dat" using 1:2 with lines lw 2 lc 1 title "on a node plane", \
+     "$data/drop_2d_0.25.dat" using 1:2 with lines lw 2 lc 2 dt 2 title "1/4 of a cell above one", \
+     "$data/drop_2d_0.5.dat" using 1:2 with lines lw 2 lc 3 dt 3 title "1/2", \
+     "$data/drop_2d_0.75.dat" using 1:2 with lines lw 2 lc 4 dt 4 title "3/4", \
+     0.15 with lines lc rgb "gray" dt 2 title "its base on the floor (0.15 m)"
+set title "near the impact"
+set key bottom left opaque box
+set xrange [0.135:0.17]
+set yrange [0.137:0.152]
+plot "$data/drop_2d_0.dat" using 1:2 with linespoints lw 2 pt 7 ps 0.4 lc 1 title "on a node plane", \
+     "$data/drop_2d_0.25.dat" using 1:2 with linespoints lw 2 pt 7 ps 0.4 lc 2 title "1/4", \
+     "$data/drop_2d_0.5.dat" using 1:2 with linespoints lw 2 pt 7 ps 0.4 lc 3 title "1/2", \
+     "$data/drop_2d_0.75.dat" using 1:2 with linespoints lw 2 pt 7 ps 0.4 lc 4 title "3/4", \
+     0.14366 with lines lw 2 lc rgb "black" dt 2 title "long-wave theory: lowest at 0.1437 m"
+unset multiplot
+set key noopaque nobox
 
 set terminal pngcairo size 900,500 font ",11" noenhanced
 set output "$png/contact_lap_shear.png"
