@@ -51,13 +51,8 @@ template <int D, class Shape>
 void contact_volumes(DiscreteSystem<D, Shape>& system) {
   auto& grid = system.grid;
   ContactFields<D>& contact = *system.contact;
-  for (std::size_t k = 0; k < contact.volume.size(); ++k) {
-    for_each_active_node(grid, [&](std::size_t n, const Index<D>&) {
-      contact.volume[k][n] = 0.0;
-      for (int d = 0; d < D; ++d) contact.volume_gradient[k][d][n] = 0.0;
-      for (auto& s : contact.spread[k].sum) s[n] = 0.0;
-    });
-  }
+  for (std::size_t k = 1; k <= contact.volume.size(); ++k)
+    for_each_active_node(grid, [&](std::size_t n, const Index<D>&) { contact.clear_node(k, n); });
   for (auto& field : contact.displacement) {
     if (field.empty()) continue;
     for_each_active_node(grid, [&](std::size_t n, const Index<D>&) {
@@ -117,14 +112,10 @@ void contact_volumes(DiscreteSystem<D, Shape>& system) {
   // (docs/theory/contact.md): below 1e-9 of the node's volume it is none.
   double node_volume = 1.0;
   for (int d = 0; d < D; ++d) node_volume *= grid.h[d];
-  for (std::size_t k = contact.deformable.size(); k < contact.volume.size(); ++k) {
+  for (std::size_t k = contact.deformable.size() + 1; k <= contact.volume.size(); ++k)
     for_each_active_node(grid, [&](std::size_t n, const Index<D>&) {
-      if (contact.volume[k][n] >= ContactFields<D>::least_volume * node_volume) return;
-      contact.volume[k][n] = 0.0;
-      for (int d = 0; d < D; ++d) contact.volume_gradient[k][d][n] = 0.0;
-      for (auto& s : contact.spread[k].sum) s[n] = 0.0;
+      if (contact.volume[k - 1][n] < ContactFields<D>::least_volume * node_volume) contact.clear_node(k, n);
     });
-  }
 }
 
 namespace detail {

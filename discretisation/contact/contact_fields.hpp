@@ -141,6 +141,14 @@ struct ContactFields {
     return false;
   }
 
+  // Clears contact field k's volume, its gradient and its particles'
+  // spread at node n.
+  void clear_node(std::size_t field, std::size_t n) {
+    volume[field - 1][n] = 0.0;
+    for (int d = 0; d < D; ++d) volume_gradient[field - 1][d][n] = 0.0;
+    for (auto& s : spread[field - 1].sum) s[n] = 0.0;
+  }
+
   Vec<D> gradient(int field, std::size_t n) const {
     Vec<D> g;
     for (int d = 0; d < D; ++d) g[d] = volume_gradient[field - 1][d][n];
