@@ -74,62 +74,102 @@ void p2g(DiscreteSystem<D, Shape>& system) {
       to_force[d] = field.force[d].data();
     }
     const Vec<D> g = b.acceleration;
-    for (std::uint32_t p = first; p < last; ++p) {
-      const Stencil<D, Shape, Force> s(grid, b.x[p], b.half_width);
-      const double m = b.mass[p];
-      const Vec<D> mv = m * b.v[p], mg = m * g;
-      // APIC: N_Ip (x_I - x_p) on the same nodes, and m_p C_p.
-      using Offsets = Stencil<D, Shape, true, StencilFactor::offset>;
+    using OneStencil = Stencil<D, Shape, Force>;
+    using Offsets = Stencil<D, Shape, true, StencilFactor::offset>;
+    // The particles in runs of up to run_length that share their stencil's
+    // nodes (particles of one cell, in their sorted order): each node of the
+    // run is loaded once, takes its particles' terms one after another in
+    // particle order (the same sums, rounded the same, as one particle at a
+    // time) and is stored once, instead of a load and a store per particle
+    // whose next particle waits on it.
+    constexpr int run_length = 8;
+    for (std::uint32_t first_in_run = first, count; first_in_run < last; first_in_run += count) {
+      OneStencil s[run_length];
+      s[0] = OneStencil(grid, b.x[first_in_run], b.half_width);
+      count = 1;
+      if constexpr (!Affine) {  // (APIC's offsets: one particle at a time)
+        while (count < run_length && first_in_run + count < last) {
+          s[count] = OneStencil(grid, b.x[first_in_run + count], b.half_width);
+          if (s[count].line_node[0] != s[0].line_node[0]) break;
+          ++count;
+        }
+      }
+      // Each particle's factors.
+      double m[run_length], mv[run_length][D], mg[run_length][D];
+      [[maybe_unused]] double Vsigma[run_length][D][D], VM[run_length], hoop[run_length], inv_r[run_length];
+      for (std::uint32_t q = 0; q < count; ++q) {
+        const std::uint32_t p = first_in_run + q;
+        m[q] = b.mass[p];
+        for (int i = 0; i < D; ++i) {
+          mv[q][i] = m[q] * b.v[p][i];
+          mg[q][i] = m[q] * g[i];
+        }
+        if constexpr (Force) {
+          const Voigt& sigma = b.stress[p];
+          for (int i = 0; i < D; ++i)
+            for (int j = 0; j < D; ++j) Vsigma[q][i][j] = b.volume[p] * sigma[voigt_slot(i, j)];
+        }
+        if constexpr (Stiffness) VM[q] = b.volume[p] * modulus[b.material];
+        if constexpr (Hoop) {  // V sigma_tt / r, 1 / r
+          inv_r[q] = 1.0 / b.x[p][0];
+          hoop[q] = b.volume[p] * b.stress[p][2] * inv_r[q];
+        }
+      }
+      // APIC: N_Ip (x_I - x_p) on the same nodes, and m_p C_p (a run of one).
       [[maybe_unused]] const auto offsets = [&] {
-        if constexpr (Affine) return Offsets(grid, b.x[p], b.half_width);
+        if constexpr (Affine) return Offsets(grid, b.x[first_in_run], b.half_width);
         else return 0;
       }();
       [[maybe_unused]] double mC[D][D];
       if constexpr (Affine)
         for (int i = 0; i < D; ++i)
-          for (int j = 0; j < D; ++j) mC[i][j] = m * b.affine[p][D * i + j];
-      double Vsigma[D][D];
-      if constexpr (Force) {
-        const Voigt& sigma = b.stress[p];
-        for (int i = 0; i < D; ++i)
-          for (int j = 0; j < D; ++j) Vsigma[i][j] = b.volume[p] * sigma[voigt_slot(i, j)];
-      }
-      [[maybe_unused]] double VM = 0.0;
-      if constexpr (Stiffness) VM = b.volume[p] * modulus[b.material];
-      [[maybe_unused]] double hoop = 0.0, inv_r = 0.0;  // V sigma_tt / r, 1 / r
-      if constexpr (Hoop) {
-        inv_r = 1.0 / b.x[p][0];
-        hoop = b.volume[p] * b.stress[p][2] * inv_r;
-      }
-      s.for_each_node_pair([&]<int Count>(int line, int k, std::size_t n) {
-        const auto w = s.template pair_weights<Count>(line, k);
-        const NodePair N = w.N;
+          for (int j = 0; j < D; ++j) mC[i][j] = m[0] * b.affine[first_in_run][D * i + j];
+      s[0].for_each_node_pair([&]<int Count>(int line, int k, std::size_t n) __attribute__((always_inline)) {
+        NodePair mass = {}, momentum[D] = {}, force[D] = {}, stiffness = {};
         if constexpr (Momentum) {
-          store_nodes<Count>(to_mass + n, load_nodes<Count>(to_mass + n) + N * m);
-          for (int i = 0; i < D; ++i) {
-            NodePair mom = N * mv[i];
-            if constexpr (Affine) {
-              const auto X = offsets.template pair_weights<Count>(line, k);
-              for (int j = 0; j < D; ++j) mom += mC[i][j] * X.dN[j];
+          mass = load_nodes<Count>(to_mass + n);
+          for (int i = 0; i < D; ++i) momentum[i] = load_nodes<Count>(to_momentum[i] + n);
+        }
+        if constexpr (Force)
+          for (int i = 0; i < D; ++i) force[i] = load_nodes<Count>(to_force[i] + n);
+        if constexpr (Stiffness) stiffness = load_nodes<Count>(to_stiffness + n);
+        for (std::uint32_t q = 0; q < count; ++q) {
+          const auto w = s[q].template pair_weights<Count>(line, k);
+          const NodePair N = w.N;
+          if constexpr (Momentum) {
+            mass = mass + N * m[q];
+            for (int i = 0; i < D; ++i) {
+              NodePair mom = N * mv[q][i];
+              if constexpr (Affine) {
+                const auto X = offsets.template pair_weights<Count>(line, k);
+                for (int j = 0; j < D; ++j) mom += mC[i][j] * X.dN[j];
+              }
+              momentum[i] = momentum[i] + mom;
             }
-            store_nodes<Count>(to_momentum[i] + n, load_nodes<Count>(to_momentum[i] + n) + mom);
+          }
+          if constexpr (Force) {
+            for (int i = 0; i < D; ++i) {
+              NodePair f = N * mg[q][i];
+              for (int j = 0; j < D; ++j) f -= Vsigma[q][i][j] * w.dN[j];
+              if constexpr (Hoop)
+                if (i == 0) f -= hoop[q] * N;
+              force[i] = force[i] + f;
+            }
+            if constexpr (Stiffness) {
+              NodePair dN2 = w.dN[0] * w.dN[0];
+              for (int j = 1; j < D; ++j) dN2 += w.dN[j] * w.dN[j];
+              if constexpr (Hoop) dN2 += (inv_r[q] * inv_r[q]) * (N * N);
+              stiffness = stiffness + VM[q] * dN2;
+            }
           }
         }
-        if constexpr (Force) {
-          for (int i = 0; i < D; ++i) {
-            NodePair f = N * mg[i];
-            for (int j = 0; j < D; ++j) f -= Vsigma[i][j] * w.dN[j];
-            if constexpr (Hoop)
-              if (i == 0) f -= hoop * N;
-            store_nodes<Count>(to_force[i] + n, load_nodes<Count>(to_force[i] + n) + f);
-          }
-          if constexpr (Stiffness) {
-            NodePair dN2 = w.dN[0] * w.dN[0];
-            for (int j = 1; j < D; ++j) dN2 += w.dN[j] * w.dN[j];
-            if constexpr (Hoop) dN2 += (inv_r * inv_r) * (N * N);
-            store_nodes<Count>(to_stiffness + n, load_nodes<Count>(to_stiffness + n) + VM * dN2);
-          }
+        if constexpr (Momentum) {
+          store_nodes<Count>(to_mass + n, mass);
+          for (int i = 0; i < D; ++i) store_nodes<Count>(to_momentum[i] + n, momentum[i]);
         }
+        if constexpr (Force)
+          for (int i = 0; i < D; ++i) store_nodes<Count>(to_force[i] + n, force[i]);
+        if constexpr (Stiffness) store_nodes<Count>(to_stiffness + n, stiffness);
       });
     }
   });

@@ -41,6 +41,7 @@ struct Stencil {
   std::array<std::size_t, lines> line_node;  // node index of k_x = 0
   std::array<double, lines> w_yz, dy_yz, dz_yz;
 
+  Stencil() = default;
   // `half_width`: the particle's half-width per axis in cells (uGIMP).
   [[gnu::always_inline]] Stencil(const Grid<D>& grid, const Vec<D>& x, const Vec<D>& half_width) {
     double w[D][support], dw[D][support];
