@@ -82,10 +82,11 @@ void p2g(DiscreteSystem<D, Shape>& system) {
     // particle order (the same sums, rounded the same, as one particle at a
     // time) and is stored once, instead of a load and a store per particle
     // whose next particle waits on it. Only linear shape functions, whose
-    // stencil is the particle's cell: a B-spline's or uGIMP's first node
-    // depends on where in the cell a particle is, so runs are rare and
-    // looking for them cost 0.73 of the quadratic B-spline's rate. APIC
-    // (its offset stencil) maps one particle at a time.
+    // stencil is the particle's cell: a quadratic B-spline's first node
+    // depends on which half of the cell a particle is in, so runs are rare
+    // and looking for them cost 0.73 of its rate (the other shape functions
+    // were not measured with runs). APIC (its offset stencil) maps one
+    // particle at a time.
     constexpr int run_length = Shape::support == 2 && !Affine ? 8 : 1;
     for (std::uint32_t first_in_run = first, count; first_in_run < last; first_in_run += count) {
       OneStencil s[run_length];
