@@ -382,7 +382,8 @@ void g2p(DiscreteSystem<D, Shape>& system) {
           } else if (xpic) {
             v_new = xpic_filtered ? v_carried : Vec<D>(v_carried - dv);
           } else {
-            v_new = a * (b.v[p] + dv) + (1.0 - a) * v_carried;
+            // Component by component: as one Eigen expression GCC called it out of line.
+            for (int d = 0; d < D; ++d) v_new[d] = a * (b.v[p][d] + dv[d]) + (1.0 - a) * v_carried[d];
           }
           if (!inside || !one_cell || !v_new.allFinite()) {
             system.flags.fail("a particle at " + position_text<D>(b.x[p]) + " would move to " +

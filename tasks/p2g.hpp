@@ -87,15 +87,23 @@ void p2g(DiscreteSystem<D, Shape>& system) {
     // and looking for them cost 0.73 of its rate (the other shape functions
     // were not measured with runs). APIC (its offset stencil) maps one
     // particle at a time.
+    // The stencil of the particle that ended a run (another cell's) is
+    // the next run's first: `next` carries it over.
     constexpr int run_length = Shape::support == 2 && !Affine ? 8 : 1;
+    OneStencil s[run_length + 1];
+    bool next_known = false;
     for (std::uint32_t first_in_run = first, count; first_in_run < last; first_in_run += count) {
-      OneStencil s[run_length];
-      s[0] = OneStencil(grid, b.x[first_in_run], b.half_width);
+      s[0] = next_known ? s[run_length] : OneStencil(grid, b.x[first_in_run], b.half_width);
+      next_known = false;
       count = 1;
       if constexpr (run_length > 1) {
         while (count < run_length && first_in_run + count < last) {
           s[count] = OneStencil(grid, b.x[first_in_run + count], b.half_width);
-          if (s[count].line_node[0] != s[0].line_node[0]) break;
+          if (s[count].line_node[0] != s[0].line_node[0]) {
+            s[run_length] = s[count];
+            next_known = true;
+            break;
+          }
           ++count;
         }
       }
