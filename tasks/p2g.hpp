@@ -88,7 +88,7 @@ void p2g(DiscreteSystem<D, Shape>& system) {
     // were not measured with runs). APIC (its offset stencil) maps one
     // particle at a time.
     // The stencil of the particle that ended a run (another cell's) is
-    // the next run's first: `next` carries it over.
+    // the next run's first: s[run_length] carries it over.
     constexpr int run_length = Shape::support == 2 && !Affine ? 8 : 1;
     OneStencil s[run_length + 1];
     bool next_known = false;
