@@ -226,22 +226,6 @@ template <int Count>
   return v;
 }
 
-// The packed copy of v and dv on the active nodes, for g2p's sums with
-// shape functions of wide support.
-template <int D>
-void pack_motion(const Grid<D>& grid, const typename NodalField<D>::VectorField& v,
-                 const typename NodalField<D>::VectorField& dv, std::vector<NodeMotion<D>>& motion) {
-  motion.resize(grid.node_count());
-  for_each_active_node(grid, [&](std::size_t n, const Index<D>&) {
-    typename NodeMotion<D>::Lanes lanes = {};
-    for (int d = 0; d < D; ++d) {
-      lanes[d] = v[d][n];
-      lanes[D + d] = dv[d][n];
-    }
-    motion[n].value = lanes;
-  });
-}
-
 // One pass over the particles: g2p_motion, g2p_stress, or both (USL), from
 // one stencil per particle at its position at the start of the pass.
 // `Apic`: APIC's velocity update; otherwise FLIP, PIC and their blend
@@ -281,20 +265,6 @@ void g2p(DiscreteSystem<D, Shape>& system) {
     g_lo[d] = Shape::reach_below;
     g_hi[d] = grid.cells[d] - Shape::reach_above + 1;
   }
-  // Shape functions of wide support (9 to 64 nodes per particle) sum from
-  // v and dv packed per node (discretisation/grid/node_motion.hpp), copied
-  // at the start of the pass (XPIC's u and w in their place): 1.06-1.08x
-  // the step rate with B-splines on 1 and 2 threads. With linear ones
-  // (8 nodes) the pairs were as fast, and the copy cost its sweep. APIC,
-  // the held nodes' share and the hoop rate sum in pairs.
-  constexpr bool packed = Shape::support >= 3 && !apic && !HeldShare && !Hoop;
-  if constexpr (packed) {
-    for (int k = 0; k < system.field_count(); ++k) {
-      NodalField<D>& field = system.field(k);
-      pack_motion(grid, xpic_filtered ? system.xpic[k].iterate.velocity : field.velocity,
-                  xpic ? system.xpic[k].correction : field.velocity_change, field.motion);
-    }
-  }
   gather_by_block(system, [&](ParticleBatch<D>& b, std::uint32_t first, std::uint32_t last, std::uint32_t block) {
     // The cells the block's particles may reach before a re-sort is due:
     // fewer than drift_limit cells outside the block, per axis.
@@ -320,7 +290,6 @@ void g2p(DiscreteSystem<D, Shape>& system) {
       [[maybe_unused]] const double* momentum[D];
       [[maybe_unused]] const double* field_velocity[D];
       [[maybe_unused]] const double* const mass = field.mass.data();
-      [[maybe_unused]] const NodeMotion<D>* const motion = field.motion.data();
       for (int d = 0; d < D; ++d) {
         if constexpr (apic_from_momentum || held_share) momentum[d] = field.momentum[d].data();
         if constexpr (held_share) field_velocity[d] = field.velocity[d].data();
@@ -335,72 +304,49 @@ void g2p(DiscreteSystem<D, Shape>& system) {
           if constexpr (apic && !affine_is_gradient) return Affine(grid, b.x[p], b.half_width);
           else return 0;
         }();
-        // Sums over the stencil. v_grid and L: of v^L+, or of XPIC's u;
-        // dv: FLIP's velocity change, or XPIC's correction w.
+        // Sums over the stencil, two nodes per lane pair, then the lanes
+        // added. v_sum and L: of v^L+, or of XPIC's u; dv_sum: FLIP's
+        // velocity change, or XPIC's correction w.
+        NodePair v_sum[D] = {}, dv_sum[D] = {}, L_sum[D][D] = {}, C_sum[D][D] = {};
+        [[maybe_unused]] NodePair held_sum[D] = {};  // the held nodes' share
+        [[maybe_unused]] NodePair hoop_sum = {};  // v_r at the particle, with L's velocities
+        s.for_each_node_pair([&]<int Count>(int line, int k, std::size_t n) {
+          const auto w = s.template pair_weights<Count>(line, k);
+          const NodePair N = w.N;
+          // APIC's affine weights G_Ip on these nodes.
+          [[maybe_unused]] const auto G = [&] {
+            if constexpr (!apic || affine_is_gradient) return w;
+            else return affine.template pair_weights<Count>(line, k);
+          }();
+          for (int i = 0; i < D; ++i) {
+            const NodePair v = load_nodes<Count>(velocity[i] + n);
+            if constexpr (Motion) {
+              if constexpr (apic_from_momentum) {
+                v_sum[i] += N * momentum_velocity<Count>(momentum[i] + n, mass + n);
+              } else {
+                v_sum[i] += N * v;
+              }
+              if constexpr (held_share)
+                held_sum[i] += N * (momentum_velocity<Count>(momentum[i] + n, mass + n) -
+                                    load_nodes<Count>(field_velocity[i] + n));
+              if constexpr (!apic) dv_sum[i] += N * load_nodes<Count>(velocity_change[i] + n);
+            }
+            if constexpr (Stress)
+              for (int j = 0; j < D; ++j) L_sum[i][j] += v * w.dN[j];
+            if constexpr (Hoop && Stress)
+              if (i == 0) hoop_sum += N * v;
+            if constexpr (apic)
+              for (int j = 0; j < D; ++j) C_sum[i][j] += v * G.dN[j];
+          }
+        });
         Vec<D> v_grid, dv;
         [[maybe_unused]] Vec<D> held;
         double L[D][D];  // velocity gradient
-        [[maybe_unused]] NodePair C_sum[D][D] = {};  // APIC's C_p, two nodes per lane pair
-        [[maybe_unused]] NodePair hoop_sum = {};  // v_r at the particle, with L's velocities
-        if constexpr (packed) {
-          // One multiply-add per node and sum, each sum in node order.
-          using Lanes = typename NodeMotion<D>::Lanes;
-          Lanes at_N = {}, at_dN[D] = {};
-          for (int line = 0; line < s.lines; ++line) {
-            for (int k = 0; k < s.support; ++k) {
-              const Lanes node = motion[s.line_node[line] + k].value;
-              at_N += (s.w_x[k] * s.w_yz[line]) * node;
-              if constexpr (Stress) {
-                at_dN[0] += (s.dw_x[k] * s.w_yz[line]) * node;
-                if constexpr (D > 1) at_dN[1] += (s.w_x[k] * s.dy_yz[line]) * node;
-                if constexpr (D > 2) at_dN[2] += (s.w_x[k] * s.dz_yz[line]) * node;
-              }
-            }
-          }
-          for (int i = 0; i < D; ++i) {
-            v_grid[i] = at_N[i];
-            dv[i] = at_N[D + i];
-            for (int j = 0; j < D; ++j) L[i][j] = at_dN[j][i];
-          }
-        } else {
-          // Two nodes per lane pair, then the lanes added.
-          NodePair v_sum[D] = {}, dv_sum[D] = {}, L_sum[D][D] = {};
-          [[maybe_unused]] NodePair held_sum[D] = {};  // the held nodes' share
-          s.for_each_node_pair([&]<int Count>(int line, int k, std::size_t n) {
-            const auto w = s.template pair_weights<Count>(line, k);
-            const NodePair N = w.N;
-            // APIC's affine weights G_Ip on these nodes.
-            [[maybe_unused]] const auto G = [&] {
-              if constexpr (!apic || affine_is_gradient) return w;
-              else return affine.template pair_weights<Count>(line, k);
-            }();
-            for (int i = 0; i < D; ++i) {
-              const NodePair v = load_nodes<Count>(velocity[i] + n);
-              if constexpr (Motion) {
-                if constexpr (apic_from_momentum) {
-                  v_sum[i] += N * momentum_velocity<Count>(momentum[i] + n, mass + n);
-                } else {
-                  v_sum[i] += N * v;
-                }
-                if constexpr (held_share)
-                  held_sum[i] += N * (momentum_velocity<Count>(momentum[i] + n, mass + n) -
-                                      load_nodes<Count>(field_velocity[i] + n));
-                if constexpr (!apic) dv_sum[i] += N * load_nodes<Count>(velocity_change[i] + n);
-              }
-              if constexpr (Stress)
-                for (int j = 0; j < D; ++j) L_sum[i][j] += v * w.dN[j];
-              if constexpr (Hoop && Stress)
-                if (i == 0) hoop_sum += N * v;
-              if constexpr (apic)
-                for (int j = 0; j < D; ++j) C_sum[i][j] += v * G.dN[j];
-            }
-          });
-          for (int i = 0; i < D; ++i) {
-            v_grid[i] = sum(v_sum[i]);
-            dv[i] = sum(dv_sum[i]);
-            if constexpr (held_share) held[i] = sum(held_sum[i]);
-            for (int j = 0; j < D; ++j) L[i][j] = sum(L_sum[i][j]);
-          }
+        for (int i = 0; i < D; ++i) {
+          v_grid[i] = sum(v_sum[i]);
+          dv[i] = sum(dv_sum[i]);
+          if constexpr (held_share) held[i] = sum(held_sum[i]);
+          for (int j = 0; j < D; ++j) L[i][j] = sum(L_sum[i][j]);
         }
         [[maybe_unused]] double hoop = 0.0;  // v_r / r
         if constexpr (Hoop && Stress) hoop = sum(hoop_sum) / b.x[p][0];

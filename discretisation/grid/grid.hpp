@@ -9,7 +9,6 @@
 #include <vector>
 
 #include "core/vec.hpp"
-#include "discretisation/grid/node_motion.hpp"
 
 namespace flowmpm {
 
@@ -44,9 +43,6 @@ struct NodalField {
   // stiffness, for shape functions whose gradient jumps (held_node in
   // tasks/grid_update.hpp); empty for the others.
   std::vector<double> stiffness;
-  // v and dv packed per node, g2p's copy for shape functions of wide
-  // support (tasks/g2p.hpp); empty for the others.
-  std::vector<NodeMotion<D>> motion;
 
   void allocate(std::size_t nodes) {
     mass.assign(nodes, 0.0);
